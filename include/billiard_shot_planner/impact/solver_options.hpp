@@ -1,0 +1,24 @@
+#pragma once
+
+#include <cstddef>
+
+namespace billiard_shot_planner
+{
+/// Numerical settings of the multiple-impact solver. The defaults give final velocities to about 1e-10
+/// relative on the paper's examples.
+struct SolverOptions
+{
+  double relative_tolerance = 1e-12;  ///< integrator tolerance on the normalised state
+  double absolute_tolerance = 1e-14;  ///< same, absolute (the normalised state is of order one)
+  /// A contact whose compression ends with a stored energy below this fraction of the initial kinetic energy,
+  /// after it has already ended compression at least twice, is taken to chatter: the solver finishes with the
+  /// limit of the infinite sequence, a rigid link while its force stays compressive (paper Theorem 12).
+  double chatter_energy_fraction = 1e-20;
+  /// The same limit is taken once a contact's stiffness has grown by this factor (k/k̄ = e^{-2j}).
+  double chatter_stiffness_growth = 1e14;
+  std::size_t max_events = 200000;     ///< bound on contact events; beyond it the solve fails (never hangs)
+  std::size_t max_steps = 5000000;     ///< bound on integrator steps
+  bool record_samples = false;         ///< keep the impulse curve and energies at every integrator step
+};
+
+}  // namespace billiard_shot_planner

@@ -1,0 +1,30 @@
+// impact_solve: one JSON problem on standard input, one JSON result on standard output.
+// Exit codes: 0 solved, 2 bad input (message on standard error), 1 the solver failed on valid input.
+#include <iostream>
+#include <iterator>
+#include <string>
+
+#include "billiard_shot_planner/io/json_problems.hpp"
+
+int main()
+{
+  using billiard_shot_planner::ErrorCode;
+  const std::string text((std::istreambuf_iterator<char>(std::cin)), std::istreambuf_iterator<char>());
+  const nlohmann::json request = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (request.is_discarded())
+  {
+    std::cerr << "impact_solve: input is not valid JSON\n";
+    return 2;
+  }
+  const auto result = billiard_shot_planner::solveJsonProblem(request);
+  if (!result)
+  {
+    const auto& error = result.error();
+    std::cerr << "impact_solve: " << toString(error.code) << ": " << error.describe() << "\n";
+    const bool bad_input = error.code == ErrorCode::InvalidArgument || error.code == ErrorCode::InvalidShot ||
+                           error.code == ErrorCode::NoApproachingContact;
+    return bad_input ? 2 : 1;
+  }
+  std::cout << result.value().dump(2) << "\n";
+  return 0;
+}

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/QR>
+#include <vector>
+
+#include "contact_space.hpp"
+#include "contact_state.hpp"
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+using OdeState = std::vector<double>;
+
+/// The continuous dynamics of the virtual springs between events (spec §4.3), in contact space.
+///
+/// The ODE state is [I, s]: accumulated contact impulses and spring deformations, both of length
+/// ContactSpace::size. Forces follow from the springs (F = −k s_n, −κ s_t), except at rigid links whose normal
+/// force is the constraint force keeping their normal velocity at zero. Holds references: the owner keeps the
+/// space and the contact states alive and calls refresh() after every discrete transition.
+class ContactDynamics
+{
+public:
+  ContactDynamics(const ContactSpace& space, const std::vector<ContactState>& contacts);
+
+  /// Recomputes what depends on the discrete state (the rigid-link constraint solve).
+  void refresh();
+
+  Eigen::VectorXd relativeVelocity(const double* y) const;
+  Eigen::VectorXd forces(const double* y) const;
+  /// dw/dt = W F: the relative acceleration, used to decide grazing activations.
+  Eigen::VectorXd relativeAcceleration(const double* y) const { return space_.delassus * forces(y); }
+  /// Normal plus tangential strain energy of contact i (dimensionless).
+  double strainEnergy(std::size_t contact, const double* y) const;
+  /// Sliding speed σ = ŝ·v_t + μη²v_n of a slipping contact's particle (spec §2.6).
+  double slidingSpeed(std::size_t contact, const double* y, const Eigen::VectorXd& w) const;
+  /// Unit direction of the tangential spring, or the stored slip direction while it is relaxed.
+  Eigen::Vector2d springDirection(std::size_t contact, const double* y) const;
+
+  /// Right-hand side for Boost.Odeint.
+  void operator()(const OdeState& y, OdeState& dydt, double /*t*/) const;
+
+private:
+  void springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w, double* rates) const;
+
+  const ContactSpace& space_;
+  const std::vector<ContactState>& contacts_;
+  std::vector<int> rigid_rows_;
+  Eigen::MatrixXd rigid_coupling_;  ///< rows of W belonging to rigid links
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> rigid_solver_;
+};
+
+}  // namespace detail
+}  // namespace billiard_shot_planner

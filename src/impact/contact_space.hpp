@@ -1,0 +1,42 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "billiard_shot_planner/impact/impact_problem.hpp"
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+/// The impact problem projected onto its contacts and made dimensionless.
+///
+/// Contact i owns rows [offset[i], offset[i] + dim[i]) of contact space: the normal first, then (for a
+/// frictional contact) the two tangents. Relative contact velocity is w = w0 + W·I, with W = J M⁻¹ Jᵀ the
+/// Delassus matrix, so the impulses I (with the springs) are the whole state. Velocities are scaled by the
+/// largest initial relative velocity, W by its largest normal diagonal entry and stiffnesses by the largest
+/// original normal stiffness; paper Theorem 5 and spec §2.10 make this exact.
+struct ContactSpace
+{
+  std::vector<int> offset;
+  std::vector<int> dim;
+  int size = 0;
+
+  Eigen::MatrixXd delassus;  ///< W̃, dimensionless
+  Eigen::VectorXd w0;        ///< w̃0, dimensionless
+  Eigen::MatrixXd response;  ///< M⁻¹ Jᵀ in physical units: Δu = response · I
+
+  double velocity_scale = 1.0;  ///< V
+  double impulse_scale = 1.0;   ///< V / W_ref
+  double energy_scale = 1.0;    ///< V² / W_ref
+  double time_scale = 1.0;      ///< 1 / √(k_ref W_ref)
+  double stiffness_scale = 1.0; ///< k_ref
+
+  std::size_t contactCount() const { return offset.size(); }
+};
+
+/// Builds the contact space of a validated problem.
+ContactSpace buildContactSpace(const ImpactProblem& problem);
+
+}  // namespace detail
+}  // namespace billiard_shot_planner

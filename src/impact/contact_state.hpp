@@ -1,0 +1,53 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include "billiard_shot_planner/impact/contact.hpp"
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+/// Normal phase of one contact in the state transition diagram.
+enum class NormalPhase
+{
+  Inactive,     ///< not touching, or touching without force; springs relaxed
+  Compression,  ///< loaded, normal velocity approaching
+  Restitution,  ///< loaded, normal velocity separating
+  RigidLink,    ///< limit of infinite stiffness (chattering or e = 0): zero normal velocity, force by constraint
+};
+
+/// The discrete part of a contact's state plus its current stiffnesses (dimensionless).
+struct ContactState
+{
+  NormalPhase phase = NormalPhase::Inactive;
+  bool slipping = false;
+  bool rigid = false;         ///< stiffness is infinite: activation makes a rigid link
+  bool chattered = false;     ///< rigid because an infinite sequence was cut at its limit
+  int ends_of_compression = 0;
+  double stiffness = 1.0;     ///< current k = k̄ / e^{2j}
+  double original_stiffness = 1.0;
+  double kappa = 1.0;         ///< tangential stiffness κ = k̄ / η̄², never changes (spec §2.4)
+  double restitution = 1.0;
+  double friction = 0.0;
+  Eigen::Vector2d slip_direction = Eigen::Vector2d::UnitX();  ///< used while the tangential spring is relaxed
+
+  bool active() const { return phase != NormalPhase::Inactive; }
+  bool compliant() const { return phase == NormalPhase::Compression || phase == NormalPhase::Restitution; }
+  /// Current η² = k/κ; grows by 1/e² with k at every end of compression (spec §2.4).
+  double eta2() const { return stiffness / kappa; }
+};
+
+inline ContactState initialContactState(const ContactLaw& law, double stiffness_scale)
+{
+  ContactState state;
+  state.original_stiffness = law.stiffness / stiffness_scale;
+  state.stiffness = state.original_stiffness;
+  state.kappa = state.original_stiffness / law.eta2;
+  state.restitution = law.restitution;
+  state.friction = law.friction;
+  return state;
+}
+
+}  // namespace detail
+}  // namespace billiard_shot_planner

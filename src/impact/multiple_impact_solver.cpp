@@ -1,0 +1,296 @@
+#include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
+
+#include <boost/math/tools/toms748_solve.hpp>
+#include <boost/numeric/odeint.hpp>
+#include <functional>
+#include <limits>
+
+#include "contact_dynamics.hpp"
+#include "contact_space.hpp"
+#include "state_transitions.hpp"
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+namespace
+{
+namespace odeint = boost::numeric::odeint;
+using Stepper = odeint::runge_kutta_dopri5<OdeState>;
+using DenseStepper = odeint::result_of::make_dense_output<Stepper>::type;
+
+/// Guard samples per integrator step: with steps bounded by a fraction of the fastest contact period this
+/// catches transitions that fire and reset within one step.
+constexpr int SAMPLES_PER_STEP = 4;
+
+struct FiredGuard
+{
+  Guard guard;
+  double time;
+};
+
+/// Integrates the spring dynamics from event to event and runs the state transition diagram.
+class ImpactSolver
+{
+public:
+  ImpactSolver(const ImpactProblem& problem, const SolverOptions& options)
+    : problem_(problem)
+    , options_(options)
+    , space_(buildContactSpace(problem))
+    , contacts_(initialContactStates(problem, space_))
+    , dynamics_(space_, contacts_)
+    , y_(2 * space_.size, 0.0)
+  {
+    result_.initial_kinetic_energy = kineticEnergy(problem.velocity);
+    chatter_.energy = options.chatter_energy_fraction * result_.initial_kinetic_energy / space_.energy_scale;
+    chatter_.stiffness_growth = options.chatter_stiffness_growth;
+  }
+
+  Expected<ImpactResult> run()
+  {
+    if (auto status = settle(); !status)
+      return status.error();
+    while (anyActive())
+    {
+      auto advanced = advanceToNextEvent();
+      if (!advanced)
+        return advanced.error();
+      if (auto status = settle(); !status)
+        return status.error();
+    }
+    return finish();
+  }
+
+private:
+  double kineticEnergy(const Eigen::VectorXd& u) const { return 0.5 * u.dot(problem_.mass_matrix * u); }
+
+  bool anyActive() const
+  {
+    for (const ContactState& contact : contacts_)
+      if (contact.active())
+        return true;
+    return false;
+  }
+
+  ImpactSnapshot snapshot(const double* y, double t) const
+  {
+    ImpactSnapshot snap;
+    snap.time = t * space_.time_scale;
+    const Eigen::VectorXd impulses = Eigen::Map<const Eigen::VectorXd>(y, space_.size) * space_.impulse_scale;
+    snap.velocity = problem_.velocity + space_.response * impulses;
+    snap.kinetic_energy = kineticEnergy(snap.velocity);
+    const auto n = static_cast<Eigen::Index>(contacts_.size());
+    snap.normal_impulses.resize(n);
+    snap.strain_energies.resize(n);
+    for (Eigen::Index i = 0; i < n; ++i)
+    {
+      snap.normal_impulses(i) = impulses(space_.offset[i]);
+      snap.strain_energies(i) = dynamics_.strainEnergy(i, y) * space_.energy_scale;
+    }
+    return snap;
+  }
+
+  std::vector<std::size_t> activeSet() const
+  {
+    std::vector<std::size_t> active;
+    for (std::size_t i = 0; i < contacts_.size(); ++i)
+      if (contacts_[i].active())
+        active.push_back(i);
+    return active;
+  }
+
+  Status countEvent()
+  {
+    if (++event_count_ > options_.max_events)
+      return Error{ErrorCode::EventLimitExceeded, "",
+                   "the state sequence did not end within " + std::to_string(options_.max_events) + " events"};
+    return {};
+  }
+
+  Status fire(const Guard& guard)
+  {
+    if (auto status = countEvent(); !status)
+      return status;
+    const Kinematics kinematics = evaluateKinematics(dynamics_, y_.data());
+    for (ContactEventType type : applyTransition(guard, kinematics, y_.data(), contacts_, space_, chatter_))
+    {
+      dynamics_.refresh();
+      result_.events.push_back({type, guard.contact, snapshot(y_.data(), t_)});
+    }
+    return {};
+  }
+
+  /// Fires every transition due at the current instant, then records the state if the active set changed.
+  Status settle()
+  {
+    dynamics_.refresh();
+    while (auto guard = immediateTransition(evaluateKinematics(dynamics_, y_.data()), contacts_, space_))
+      if (auto status = fire(*guard); !status)
+        return status;
+    std::vector<std::size_t> active = activeSet();
+    if (result_.states.empty() || result_.states.back().active != active)
+      result_.states.push_back({std::move(active), snapshot(y_.data(), t_)});
+    return {};
+  }
+
+  /// Angular frequency bound of the active springs: the largest eigenvalue of W K is at most its trace.
+  double fastestFrequency() const
+  {
+    double trace = 0.0;
+    for (std::size_t i = 0; i < contacts_.size(); ++i)
+    {
+      if (!contacts_[i].active())
+        continue;
+      const int row = space_.offset[i];
+      if (contacts_[i].compliant())
+        trace += space_.delassus(row, row) * contacts_[i].stiffness;
+      if (space_.dim[i] == 3)
+        trace += (space_.delassus(row + 1, row + 1) + space_.delassus(row + 2, row + 2)) * contacts_[i].kappa;
+    }
+    return std::sqrt(std::max(trace, std::numeric_limits<double>::min()));
+  }
+
+  Expected<bool> advanceToNextEvent()
+  {
+    const double omega = fastestFrequency();
+    DenseStepper stepper = odeint::make_dense_output(options_.absolute_tolerance, options_.relative_tolerance,
+                                                     0.5 / omega, Stepper());
+    stepper.initialize(y_, t_, 0.01 / omega);
+    std::vector<Guard> guards = armedGuards(contacts_, space_);
+    while (true)
+    {
+      if (++step_count_ > options_.max_steps)
+        return Error{ErrorCode::StepLimitExceeded, "",
+                     "the impact did not end within " + std::to_string(options_.max_steps) + " integrator steps"};
+      const auto [t0, t1] = stepper.do_step(std::cref(dynamics_));
+      std::vector<FiredGuard> fired = firedGuards(stepper, guards, t0, t1);
+      if (fired.empty())
+      {
+        recordSample(stepper.current_state().data(), t1);
+        continue;
+      }
+      stepper.calc_state(fired.front().time, y_);
+      t_ = fired.front().time;
+      for (const FiredGuard& f : fired)
+        if (auto status = fire(f.guard); !status)
+          return status.error();
+      recordSample(y_.data(), t_);
+      return true;
+    }
+  }
+
+  void recordSample(const double* y, double t)
+  {
+    if (options_.record_samples)
+      result_.samples.push_back(snapshot(y, t));
+  }
+
+  double guardAt(const DenseStepper& stepper, const Guard& guard, double t, OdeState& buffer) const
+  {
+    stepper.calc_state(t, buffer);
+    return guardValue(guard, evaluateKinematics(dynamics_, buffer.data()), contacts_, dynamics_, space_);
+  }
+
+  /// The earliest guard to rise through zero in [t0, t1], with every other one within round-off of it.
+  std::vector<FiredGuard> firedGuards(const DenseStepper& stepper, const std::vector<Guard>& guards, double t0,
+                                      double t1) const
+  {
+    OdeState buffer(y_.size());
+    std::vector<FiredGuard> crossings;
+    const double h = (t1 - t0) / SAMPLES_PER_STEP;
+    for (const Guard& guard : guards)
+    {
+      double a = t0;
+      double ga = guardAt(stepper, guard, a, buffer);
+      for (int k = 1; k <= SAMPLES_PER_STEP; ++k)
+      {
+        const double b = k == SAMPLES_PER_STEP ? t1 : t0 + k * h;
+        const double gb = guardAt(stepper, guard, b, buffer);
+        if (ga <= 0.0 && gb > 0.0)
+        {
+          crossings.push_back({guard, locateRoot(stepper, guard, a, b, ga, gb)});
+          break;
+        }
+        a = b;
+        ga = gb;
+      }
+    }
+    if (crossings.empty())
+      return crossings;
+    double first = crossings.front().time;
+    for (const FiredGuard& c : crossings)
+      first = std::min(first, c.time);
+    const double simultaneous = 1e-12 * (t1 - t0);
+    std::vector<FiredGuard> fired;
+    for (const FiredGuard& c : crossings)
+      if (c.time <= first + simultaneous)
+        fired.push_back({c.guard, first});
+    return fired;
+  }
+
+  /// The instant just after the guard's zero (so that the transition has numerically happened).
+  double locateRoot(const DenseStepper& stepper, const Guard& guard, double a, double b, double ga, double gb) const
+  {
+    if (ga == 0.0)
+      return a;
+    OdeState buffer(y_.size());
+    const double width = b - a;
+    auto close_enough = [width](double lo, double hi) {
+      return hi - lo <= 1e-15 * width + 4.0 * std::numeric_limits<double>::epsilon() * std::abs(lo);
+    };
+    std::uintmax_t iterations = 100;
+    const auto bracket = boost::math::tools::toms748_solve(
+        [&](double t) { return guardAt(stepper, guard, t, buffer); }, a, b, ga, gb, close_enough, iterations);
+    return bracket.second;
+  }
+
+  Expected<ImpactResult> finish()
+  {
+    const ImpactSnapshot last = snapshot(y_.data(), t_);
+    result_.velocity = last.velocity;
+    result_.final_kinetic_energy = last.kinetic_energy;
+    for (std::size_t i = 0; i < contacts_.size(); ++i)
+    {
+      const int row = space_.offset[i];
+      ContactImpulse impulse;
+      impulse.normal = y_[row] * space_.impulse_scale;
+      if (space_.dim[i] == 3)
+        impulse.tangential = Eigen::Vector2d(y_[row + 1], y_[row + 2]) * space_.impulse_scale;
+      result_.impulses.push_back(impulse);
+      result_.ends_of_compression.push_back(contacts_[i].ends_of_compression);
+      result_.converged = result_.converged || contacts_[i].chattered;
+    }
+    return std::move(result_);
+  }
+
+  const ImpactProblem& problem_;
+  const SolverOptions& options_;
+  ContactSpace space_;
+  std::vector<ContactState> contacts_;
+  ContactDynamics dynamics_;
+  ChatterLimit chatter_{};
+  OdeState y_;
+  double t_ = 0.0;
+  std::size_t event_count_ = 0;
+  std::size_t step_count_ = 0;
+  ImpactResult result_;
+};
+}  // namespace
+}  // namespace detail
+
+Expected<ImpactResult> solveMultipleImpact(const ImpactProblem& problem, const SolverOptions& options)
+{
+  if (Status status = validate(problem); !status)
+    return status.error();
+  try
+  {
+    return detail::ImpactSolver(problem, options).run();
+  }
+  catch (const std::exception& e)
+  {
+    // Odeint signals a step size collapse, and Boost.Math a failed bracket, by exceptions.
+    return Error{ErrorCode::NumericalFailure, "", std::string("numerical failure: ") + e.what()};
+  }
+}
+
+}  // namespace billiard_shot_planner

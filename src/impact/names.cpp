@@ -1,0 +1,50 @@
+#include "billiard_shot_planner/core/expected.hpp"
+#include "billiard_shot_planner/impact/impact_result.hpp"
+
+namespace billiard_shot_planner
+{
+const char* toString(ErrorCode code)
+{
+  switch (code)
+  {
+    case ErrorCode::InvalidArgument:
+      return "invalid_argument";
+    case ErrorCode::NoApproachingContact:
+      return "no_approaching_contact";
+    case ErrorCode::InvalidShot:
+      return "invalid_shot";
+    case ErrorCode::EventLimitExceeded:
+      return "event_limit_exceeded";
+    case ErrorCode::StepLimitExceeded:
+      return "step_limit_exceeded";
+    case ErrorCode::NumericalFailure:
+      return "numerical_failure";
+  }
+  return "unknown";
+}
+
+const char* toString(ContactEventType type)
+{
+  switch (type)
+  {
+    case ContactEventType::EndOfCompression:
+      return "end_of_compression";
+    case ContactEventType::RestartOfCompression:
+      return "restart_of_compression";
+    case ContactEventType::Separation:
+      return "separation";
+    case ContactEventType::Reactivation:
+      return "reactivation";
+    case ContactEventType::StickToSlip:
+      return "stick_to_slip";
+    case ContactEventType::SlipToStick:
+      return "slip_to_stick";
+    case ContactEventType::RigidLink:
+      return "rigid_link";
+    case ContactEventType::LinkRelease:
+      return "link_release";
+  }
+  return "unknown";
+}
+
+}  // namespace billiard_shot_planner

@@ -1,0 +1,250 @@
+#include "state_transitions.hpp"
+
+#include <cmath>
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+namespace
+{
+/// Dimensionless thresholds below which a velocity or force is round-off (the normalised state is of order one).
+constexpr double VELOCITY_TOLERANCE = 1e-12;
+constexpr double FORCE_TOLERANCE = 1e-12;
+
+double* springs(double* y, const ContactSpace& space, std::size_t contact)
+{
+  return y + space.size + space.offset[contact];
+}
+
+void relaxSprings(double* y, const ContactSpace& space, std::size_t contact)
+{
+  double* s = springs(y, space, contact);
+  for (int k = 0; k < space.dim[contact]; ++k)
+    s[k] = 0.0;
+}
+
+
+/// Initial tangential mode of a contact whose springs are relaxed (spec §2.8a and §2.8c).
+void chooseInitialMode(ContactState& contact, const Eigen::VectorXd& velocity, const ContactSpace& space,
+                       std::size_t index)
+{
+  contact.slipping = false;
+  if (space.dim[index] != 3)
+    return;
+  const int row = space.offset[index];
+  const Eigen::Vector2d v_t(velocity(row + 1), velocity(row + 2));
+  const double v_n = velocity(row);
+  if (v_t.norm() > contact.friction * contact.eta2() * std::abs(v_n) + VELOCITY_TOLERANCE)
+  {
+    contact.slipping = true;
+    contact.slip_direction = v_t.normalized();
+  }
+}
+
+bool isChattering(const ContactState& contact, double stored_energy, const ChatterLimit& chatter)
+{
+  if (contact.restitution == 0.0)
+    return true;
+  const bool negligible = contact.ends_of_compression >= 3 && stored_energy <= chatter.energy;
+  return negligible || contact.stiffness / contact.original_stiffness >= chatter.stiffness_growth;
+}
+
+std::vector<ContactEventType> endCompression(std::size_t index, double* y, std::vector<ContactState>& contacts,
+                                             const ContactSpace& space, const ChatterLimit& chatter)
+{
+  ContactState& contact = contacts[index];
+  double* s = springs(y, space, index);
+  if (s[0] >= 0.0)
+  {
+    // Touched without ever loading: the bodies simply move apart.
+    contact.phase = NormalPhase::Inactive;
+    relaxSprings(y, space, index);
+    return {ContactEventType::Separation};
+  }
+  ++contact.ends_of_compression;
+  const double stored_energy = 0.5 * contact.stiffness * s[0] * s[0];
+  if (isChattering(contact, stored_energy, chatter))
+  {
+    // Limit of infinite stiffness: the remaining normal strain energy (negligible, or lost when e = 0) is dropped.
+    contact.rigid = true;
+    contact.chattered = contact.restitution > 0.0;
+    contact.phase = NormalPhase::RigidLink;
+    s[0] = 0.0;
+    return {ContactEventType::EndOfCompression, ContactEventType::RigidLink};
+  }
+  // Paper §3.3 (i): k ← k/e², E ← e²E, so s_n ← e² s_n and the force stays continuous.
+  const double e2 = contact.restitution * contact.restitution;
+  contact.stiffness /= e2;
+  s[0] *= e2;
+  contact.phase = NormalPhase::Restitution;
+  return {ContactEventType::EndOfCompression};
+}
+
+void activate(std::size_t index, const Kinematics& kinematics, double* y, std::vector<ContactState>& contacts,
+              const ContactSpace& space)
+{
+  ContactState& contact = contacts[index];
+  relaxSprings(y, space, index);
+  contact.phase = contact.rigid ? NormalPhase::RigidLink : NormalPhase::Compression;
+  chooseInitialMode(contact, kinematics.velocity, space, index);
+}
+}  // namespace
+
+Kinematics evaluateKinematics(const ContactDynamics& dynamics, const double* y)
+{
+  return Kinematics{y, dynamics.relativeVelocity(y), dynamics.forces(y)};
+}
+
+std::vector<Guard> armedGuards(const std::vector<ContactState>& contacts, const ContactSpace& space)
+{
+  std::vector<Guard> guards;
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+  {
+    switch (contacts[i].phase)
+    {
+      case NormalPhase::Inactive:
+        guards.push_back({i, ContactEventType::Reactivation});
+        continue;
+      case NormalPhase::Compression:
+        guards.push_back({i, ContactEventType::EndOfCompression});
+        break;
+      case NormalPhase::Restitution:
+        guards.push_back({i, ContactEventType::RestartOfCompression});
+        guards.push_back({i, ContactEventType::Separation});
+        break;
+      case NormalPhase::RigidLink:
+        guards.push_back({i, ContactEventType::LinkRelease});
+        break;
+    }
+    if (space.dim[i] == 3)
+      guards.push_back({i, contacts[i].slipping ? ContactEventType::SlipToStick : ContactEventType::StickToSlip});
+  }
+  return guards;
+}
+
+double guardValue(const Guard& guard, const Kinematics& kinematics, const std::vector<ContactState>& contacts,
+                  const ContactDynamics& dynamics, const ContactSpace& space)
+{
+  const int row = space.offset[guard.contact];
+  const double* s = kinematics.y + space.size + row;
+  const ContactState& contact = contacts[guard.contact];
+  switch (guard.type)
+  {
+    case ContactEventType::EndOfCompression:
+      return kinematics.velocity(row);
+    case ContactEventType::RestartOfCompression:
+    case ContactEventType::Reactivation:
+      return -kinematics.velocity(row);
+    case ContactEventType::Separation:
+      return s[0];
+    case ContactEventType::LinkRelease:
+      return -kinematics.force(row);
+    case ContactEventType::StickToSlip:
+      // |F_t| − μ F_n, i.e. E_t − μ²η²E_n in force form (spec §2.5).
+      return std::hypot(kinematics.force(row + 1), kinematics.force(row + 2)) -
+             contact.friction * kinematics.force(row);
+    case ContactEventType::SlipToStick:
+      return -dynamics.slidingSpeed(guard.contact, kinematics.y, kinematics.velocity);
+    case ContactEventType::RigidLink:
+      break;
+  }
+  return -1.0;
+}
+
+std::vector<ContactEventType> applyTransition(const Guard& guard, const Kinematics& kinematics, double* y,
+                                              std::vector<ContactState>& contacts, const ContactSpace& space,
+                                              const ChatterLimit& chatter)
+{
+  ContactState& contact = contacts[guard.contact];
+  switch (guard.type)
+  {
+    case ContactEventType::EndOfCompression:
+      return endCompression(guard.contact, y, contacts, space, chatter);
+    case ContactEventType::RestartOfCompression:
+      contact.phase = NormalPhase::Compression;  // paper §3.3 (ii): k kept
+      break;
+    case ContactEventType::Separation:
+    case ContactEventType::LinkRelease:
+      contact.phase = NormalPhase::Inactive;
+      contact.slipping = false;
+      relaxSprings(y, space, guard.contact);
+      break;
+    case ContactEventType::Reactivation:
+      activate(guard.contact, kinematics, y, contacts, space);  // paper §3.3 (iii): k kept
+      break;
+    case ContactEventType::StickToSlip:
+    {
+      const int row = space.offset[guard.contact];
+      const Eigen::Vector2d force(kinematics.force(row + 1), kinematics.force(row + 2));
+      contact.slipping = true;
+      // The spring points against its force; keep that direction while the spring is short.
+      if (force.norm() > 0.0)
+        contact.slip_direction = -force.normalized();
+      break;
+    }
+    case ContactEventType::SlipToStick:
+      contact.slipping = false;
+      break;
+    case ContactEventType::RigidLink:
+      break;
+  }
+  return {guard.type};
+}
+
+std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std::vector<ContactState>& contacts,
+                                         const ContactSpace& space)
+{
+  Eigen::VectorXd acceleration;
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+  {
+    const int row = space.offset[i];
+    const double v_n = kinematics.velocity(row);
+    const double s_n = kinematics.y[space.size + row];
+    switch (contacts[i].phase)
+    {
+      case NormalPhase::Inactive:
+        if (v_n < -VELOCITY_TOLERANCE)
+          return Guard{i, ContactEventType::Reactivation};
+        if (v_n <= VELOCITY_TOLERANCE)
+        {
+          // Grazing: the bodies touch with zero normal velocity; they stay in contact if they are pushed together.
+          if (acceleration.size() == 0)
+            acceleration = space.delassus * kinematics.force;
+          if (acceleration(row) < -FORCE_TOLERANCE)
+            return Guard{i, ContactEventType::Reactivation};
+        }
+        break;
+      case NormalPhase::RigidLink:
+        if (kinematics.force(row) <= FORCE_TOLERANCE)
+          return Guard{i, ContactEventType::LinkRelease};
+        break;
+      case NormalPhase::Compression:
+        if (s_n >= 0.0 && v_n > VELOCITY_TOLERANCE)
+          return Guard{i, ContactEventType::EndOfCompression};
+        break;
+      case NormalPhase::Restitution:
+        break;
+    }
+  }
+  return std::nullopt;
+}
+
+std::vector<ContactState> initialContactStates(const ImpactProblem& problem, const ContactSpace& space)
+{
+  std::vector<ContactState> contacts;
+  for (std::size_t i = 0; i < problem.contacts.size(); ++i)
+  {
+    ContactState contact = initialContactState(problem.contacts[i].law, space.stiffness_scale);
+    if (space.w0(space.offset[i]) <= VELOCITY_TOLERANCE)
+    {
+      contact.phase = NormalPhase::Compression;
+      chooseInitialMode(contact, space.w0, space, i);
+    }
+    contacts.push_back(contact);
+  }
+  return contacts;
+}
+
+}  // namespace detail
+}  // namespace billiard_shot_planner

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "billiard_shot_planner/impact/impact_result.hpp"
+#include "contact_dynamics.hpp"
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+/// The state transition diagram (paper §3.1, generated on the fly for any number of contacts as in §10, with the
+/// tangential modes of spec §2.7): which transitions are armed in a discrete state, when they fire, and what they
+/// do to the contact.
+
+/// A transition that may fire: it fires when its guard function rises through zero.
+struct Guard
+{
+  std::size_t contact;
+  ContactEventType type;
+};
+
+/// Values that every guard evaluation at one instant shares.
+struct Kinematics
+{
+  const double* y;
+  Eigen::VectorXd velocity;  ///< relative contact velocity w
+  Eigen::VectorXd force;     ///< contact forces F
+};
+
+Kinematics evaluateKinematics(const ContactDynamics& dynamics, const double* y);
+
+/// Guards armed by the current discrete state.
+std::vector<Guard> armedGuards(const std::vector<ContactState>& contacts, const ContactSpace& space);
+
+/// g such that the transition fires when g rises through zero.
+double guardValue(const Guard& guard, const Kinematics& kinematics, const std::vector<ContactState>& contacts,
+                  const ContactDynamics& dynamics, const ContactSpace& space);
+
+/// When a contact's sequence of compressions is taken to be infinite and replaced by its limit.
+struct ChatterLimit
+{
+  double energy;           ///< dimensionless stored energy below which a further end of compression means chatter
+  double stiffness_growth; ///< or once k/k̄ exceeds this
+};
+
+/// Applies a fired transition to the contact (and its springs in y). Returns the events to log, in order: usually
+/// just guard.type, but an end of compression can also turn the contact into a rigid link, and one on an unloaded
+/// contact is a separation.
+std::vector<ContactEventType> applyTransition(const Guard& guard, const Kinematics& kinematics, double* y,
+                                              std::vector<ContactState>& contacts, const ContactSpace& space,
+                                              const ChatterLimit& chatter);
+
+/// A transition that must happen at once in the current configuration, without any time passing: an inactive
+/// contact that approaches (or is about to), a rigid link whose force is not compressive, a contact in
+/// compression that never loaded and is opening.
+std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std::vector<ContactState>& contacts,
+                                         const ContactSpace& space);
+
+/// Initial discrete state: every contact whose bodies approach or touch (normal velocity ≤ 0) starts compressing.
+std::vector<ContactState> initialContactStates(const ImpactProblem& problem, const ContactSpace& space);
+
+}  // namespace detail
+}  // namespace billiard_shot_planner

@@ -1,0 +1,124 @@
+// Every class of bad input gives a typed error that names the field; nothing throws.
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
+#include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
+#include "billiard_shot_planner/scenarios/ball_chain.hpp"
+
+namespace bsp = billiard_shot_planner;
+
+namespace
+{
+const double NaN = std::numeric_limits<double>::quiet_NaN();
+const double INF = std::numeric_limits<double>::infinity();
+
+bsp::ImpactProblem validProblem()
+{
+  bsp::BallBallTable c;
+  return bsp::makeImpactProblem(c).value();
+}
+
+void expectError(const bsp::ImpactProblem& problem, bsp::ErrorCode code, const std::string& field)
+{
+  const auto result = bsp::solveMultipleImpact(problem);
+  ASSERT_FALSE(result.ok()) << "expected an error on " << field;
+  EXPECT_EQ(result.error().code, code);
+  EXPECT_EQ(result.error().field, field);
+  EXPECT_FALSE(result.error().message.empty());
+}
+}  // namespace
+
+TEST(BadInput, EngineNamesTheField)
+{
+  using E = bsp::ErrorCode;
+  auto p = validProblem();
+  p.mass_matrix(0, 0) = NaN;
+  expectError(p, E::InvalidArgument, "mass_matrix");
+  p = validProblem();
+  p.mass_matrix(1, 1) = -1.0;
+  expectError(p, E::InvalidArgument, "mass_matrix");
+  p = validProblem();
+  p.mass_matrix(1, 1) = 0.0;
+  expectError(p, E::InvalidArgument, "mass_matrix");
+  p = validProblem();
+  p.mass_matrix(0, 1) = 0.5;
+  expectError(p, E::InvalidArgument, "mass_matrix");
+  p = validProblem();
+  p.velocity(0) = INF;
+  expectError(p, E::InvalidArgument, "velocity");
+  p = validProblem();
+  p.velocity.resize(3);
+  expectError(p, E::InvalidArgument, "velocity");
+  p = validProblem();
+  p.contacts[1].law.restitution = 1.5;
+  expectError(p, E::InvalidArgument, "contacts[1].law.restitution");
+  p = validProblem();
+  p.contacts[0].law.restitution = -0.1;
+  expectError(p, E::InvalidArgument, "contacts[0].law.restitution");
+  p = validProblem();
+  p.contacts[0].law.restitution = NaN;
+  expectError(p, E::InvalidArgument, "contacts[0].law.restitution");
+  p = validProblem();
+  p.contacts[1].law.stiffness = 0.0;
+  expectError(p, E::InvalidArgument, "contacts[1].law.stiffness");
+  p = validProblem();
+  p.contacts[1].law.stiffness = -2.0;
+  expectError(p, E::InvalidArgument, "contacts[1].law.stiffness");
+  p = validProblem();
+  p.contacts[0].law.stiffness = INF;
+  expectError(p, E::InvalidArgument, "contacts[0].law.stiffness");
+  p = validProblem();
+  p.contacts[0].normal.setZero();
+  expectError(p, E::InvalidArgument, "contacts[0].normal");
+  p = validProblem();
+  p.contacts[0].normal(0) = NaN;
+  expectError(p, E::InvalidArgument, "contacts[0].normal");
+  p = validProblem();
+  p.contacts.clear();
+  expectError(p, E::InvalidArgument, "contacts");
+  p = validProblem();
+  p.velocity.setZero();
+  expectError(p, E::NoApproachingContact, "velocity");
+  p = validProblem();
+  p.velocity(0) = +1.0;
+  expectError(p, E::NoApproachingContact, "velocity");
+}
+
+TEST(BadInput, ScenarioBuildersNameTheirOwnFields)
+{
+  bsp::BallBallTable c;
+  c.e1 = 2.0;
+  EXPECT_EQ(bsp::solve(c).error().field, "e1");
+  c = {};
+  c.m2 = 0.0;
+  EXPECT_EQ(bsp::solve(c).error().field, "m2");
+  c = {};
+  c.stiffness_ratio = NaN;
+  EXPECT_EQ(bsp::solve(c).error().field, "stiffness_ratio");
+  c = {};
+  c.v0 = 0.5;
+  EXPECT_EQ(bsp::solve(c).error().code, bsp::ErrorCode::NoApproachingContact);
+
+  bsp::BallChain chain{{1.0, 1.0}, {1.0, 0.0}, {1.0}, {1.0}, false};
+  chain.stiffness = {1.0, 2.0};
+  EXPECT_EQ(bsp::solve(chain).error().field, "stiffness");
+  chain.stiffness = {1.0};
+  chain.masses[1] = -1.0;
+  EXPECT_EQ(bsp::solve(chain).error().field, "masses[1]");
+  chain.masses[1] = 1.0;
+  chain.velocities = {0.0, 1.0};
+  EXPECT_EQ(bsp::solve(chain).error().code, bsp::ErrorCode::NoApproachingContact);
+}
+
+TEST(BadInput, EventLimitStopsInsteadOfLooping)
+{
+  bsp::BallBallTable c;
+  c.m2 = 2.0 / std::sqrt(3.0);
+  bsp::SolverOptions options;
+  options.max_events = 2;
+  const auto result = bsp::solve(c, options);
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.error().code, bsp::ErrorCode::EventLimitExceeded);
+}
