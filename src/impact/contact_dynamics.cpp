@@ -5,7 +5,7 @@ namespace billiard_shot_planner
 namespace detail
 {
 ContactDynamics::ContactDynamics(const ContactSpace& space, const std::vector<ContactState>& contacts)
-  : space_(space), contacts_(contacts)
+    : space_(space), contacts_(contacts)
 {
   refresh();
 }
@@ -90,8 +90,7 @@ double ContactDynamics::slidingSpeed(std::size_t contact, const double* y, const
   return springDirection(contact, y).dot(tangential_velocity) + state.friction * state.eta2() * w(row);
 }
 
-void ContactDynamics::springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w,
-                                  double* rates) const
+void ContactDynamics::springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w, double* rates) const
 {
   const ContactState& state = contacts_[contact];
   const int row = space_.offset[contact];

@@ -26,11 +26,11 @@ struct ContactSpace
   Eigen::VectorXd w0;        ///< w̃0, dimensionless
   Eigen::MatrixXd response;  ///< M⁻¹ Jᵀ in physical units: Δu = response · I
 
-  double velocity_scale = 1.0;  ///< V
-  double impulse_scale = 1.0;   ///< V / W_ref
-  double energy_scale = 1.0;    ///< V² / W_ref
-  double time_scale = 1.0;      ///< 1 / √(k_ref W_ref)
-  double stiffness_scale = 1.0; ///< k_ref
+  double velocity_scale = 1.0;   ///< V
+  double impulse_scale = 1.0;    ///< V / W_ref
+  double energy_scale = 1.0;     ///< V² / W_ref
+  double time_scale = 1.0;       ///< 1 / √(k_ref W_ref)
+  double stiffness_scale = 1.0;  ///< k_ref
 
   std::size_t contactCount() const { return offset.size(); }
 };

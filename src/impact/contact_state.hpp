@@ -22,12 +22,12 @@ struct ContactState
 {
   NormalPhase phase = NormalPhase::Inactive;
   bool slipping = false;
-  bool rigid = false;         ///< stiffness is infinite: activation makes a rigid link
-  bool chattered = false;     ///< rigid because an infinite sequence was cut at its limit
+  bool rigid = false;      ///< stiffness is infinite: activation makes a rigid link
+  bool chattered = false;  ///< rigid because an infinite sequence was cut at its limit
   int ends_of_compression = 0;
-  double stiffness = 1.0;     ///< current k = k̄ / e^{2j}
+  double stiffness = 1.0;  ///< current k = k̄ / e^{2j}
   double original_stiffness = 1.0;
-  double kappa = 1.0;         ///< tangential stiffness κ = k̄ / η̄², never changes (spec §2.4)
+  double kappa = 1.0;  ///< tangential stiffness κ = k̄ / η̄², never changes (spec §2.4)
   double restitution = 1.0;
   double friction = 0.0;
   Eigen::Vector2d slip_direction = Eigen::Vector2d::UnitX();  ///< used while the tangential spring is relaxed

@@ -24,7 +24,6 @@ void relaxSprings(double* y, const ContactSpace& space, std::size_t contact)
     s[k] = 0.0;
 }
 
-
 /// Initial tangential mode of a contact whose springs are relaxed (spec §2.8a and §2.8c).
 void chooseInitialMode(ContactState& contact, const Eigen::VectorXd& velocity, const ContactSpace& space,
                        std::size_t index)

@@ -41,8 +41,8 @@ double guardValue(const Guard& guard, const Kinematics& kinematics, const std::v
 /// When a contact's sequence of compressions is taken to be infinite and replaced by its limit.
 struct ChatterLimit
 {
-  double energy;           ///< dimensionless stored energy below which a further end of compression means chatter
-  double stiffness_growth; ///< or once k/k̄ exceeds this
+  double energy;            ///< dimensionless stored energy below which a further end of compression means chatter
+  double stiffness_growth;  ///< or once k/k̄ exceeds this
 };
 
 /// Applies a fired transition to the contact (and its springs in y). Returns the events to log, in order: usually

@@ -2,8 +2,8 @@
 
 #include <cmath>
 #include <optional>
-#include <tuple>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"

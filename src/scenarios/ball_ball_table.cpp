@@ -24,9 +24,9 @@ Status requireRestitution(double value, const char* field)
 
 Status check(const BallBallTable& c)
 {
-  for (Status status : {requirePositive(c.m1, "m1"), requirePositive(c.m2, "m2"),
-                        requirePositive(c.stiffness_ratio, "stiffness_ratio"), requireRestitution(c.e1, "e1"),
-                        requireRestitution(c.e2, "e2")})
+  for (Status status :
+       {requirePositive(c.m1, "m1"), requirePositive(c.m2, "m2"), requirePositive(c.stiffness_ratio, "stiffness_ratio"),
+        requireRestitution(c.e1, "e1"), requireRestitution(c.e2, "e2")})
     if (!status)
       return status;
   if (!std::isfinite(c.v0))

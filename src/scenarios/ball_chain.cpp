@@ -21,8 +21,8 @@ Status checkSizes(const BallChain& chain)
   if (chain.velocities.size() != chain.masses.size())
     return invalidArgument("velocities", "must have one entry per ball");
   if (chain.stiffness.size() != chain.contactCount())
-    return invalidArgument("stiffness", "must have one entry per contact (" + std::to_string(chain.contactCount()) +
-                                            ")");
+    return invalidArgument("stiffness",
+                           "must have one entry per contact (" + std::to_string(chain.contactCount()) + ")");
   if (chain.restitution.size() != chain.contactCount())
     return invalidArgument("restitution",
                            "must have one entry per contact (" + std::to_string(chain.contactCount()) + ")");

@@ -1,12 +1,12 @@
 // The impact_solve program: JSON in, JSON out, exit code 2 with a message on bad input.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <array>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <sys/wait.h>
 
 namespace
 {

@@ -48,8 +48,8 @@ TEST(Chain, TwoBallsIsASingleImpact)
 
 TEST(Chain, FreeChainConservesMomentum)
 {
-  bsp::BallChain chain{{1.0, 0.3, 2.5, 0.7, 1.2}, {2.0, 0.5, 0.0, -0.3, -1.0}, {1.0, 2.0, 0.5, 3.0},
-                       {0.8, 0.5, 0.9, 0.3}, false};
+  bsp::BallChain chain{
+      {1.0, 0.3, 2.5, 0.7, 1.2}, {2.0, 0.5, 0.0, -0.3, -1.0}, {1.0, 2.0, 0.5, 3.0}, {0.8, 0.5, 0.9, 0.3}, false};
   const auto r = bsp::solve(chain).value();
   const Eigen::VectorXd v0 = Eigen::Map<const Eigen::VectorXd>(chain.velocities.data(), 5);
   EXPECT_NEAR(momentum(chain.masses, r.velocity), momentum(chain.masses, v0), 1e-12);

@@ -9,12 +9,12 @@ namespace billiard_shot_planner
 /// What kind of failure a core call reports. Callers branch on the code; the message is for people.
 enum class ErrorCode
 {
-  InvalidArgument,      ///< a field is NaN, infinite, out of range or inconsistent
-  NoApproachingContact, ///< nothing collides: no contact has a negative normal velocity
-  InvalidShot,          ///< the cue cannot strike the ball as described
-  EventLimitExceeded,   ///< the state sequence did not finish within the configured number of events
-  StepLimitExceeded,    ///< the integrator did not finish within the configured number of steps
-  NumericalFailure,     ///< the integrator or a root finder failed
+  InvalidArgument,       ///< a field is NaN, infinite, out of range or inconsistent
+  NoApproachingContact,  ///< nothing collides: no contact has a negative normal velocity
+  InvalidShot,           ///< the cue cannot strike the ball as described
+  EventLimitExceeded,    ///< the state sequence did not finish within the configured number of events
+  StepLimitExceeded,     ///< the integrator did not finish within the configured number of steps
+  NumericalFailure,      ///< the integrator or a root finder failed
 };
 
 const char* toString(ErrorCode code);

@@ -13,9 +13,9 @@ namespace billiard_shot_planner
 /// against impact forces and are not modelled (paper §2).
 struct ImpactProblem
 {
-  Eigen::MatrixXd mass_matrix;      ///< d×d, symmetric positive definite (kg, kg·m², …)
-  Eigen::VectorXd velocity;         ///< u before the impact
-  std::vector<Contact> contacts;    ///< at least one must approach (normal · u < 0)
+  Eigen::MatrixXd mass_matrix;    ///< d×d, symmetric positive definite (kg, kg·m², …)
+  Eigen::VectorXd velocity;       ///< u before the impact
+  std::vector<Contact> contacts;  ///< at least one must approach (normal · u < 0)
 };
 
 /// Checks every field; the error names the first bad one (e.g. "contacts[1].law.restitution").

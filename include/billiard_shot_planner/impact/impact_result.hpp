@@ -33,9 +33,9 @@ struct ContactImpulse
 struct ImpactSnapshot
 {
   double time = 0.0;
-  Eigen::VectorXd normal_impulses;   ///< per contact
-  Eigen::VectorXd velocity;          ///< generalised velocity u
-  Eigen::VectorXd strain_energies;   ///< per contact, normal plus tangential springs
+  Eigen::VectorXd normal_impulses;  ///< per contact
+  Eigen::VectorXd velocity;         ///< generalised velocity u
+  Eigen::VectorXd strain_energies;  ///< per contact, normal plus tangential springs
   double kinetic_energy = 0.0;
   double total_energy() const { return kinetic_energy + strain_energies.sum(); }
 };
@@ -57,12 +57,12 @@ struct ImpactState
 
 struct ImpactResult
 {
-  Eigen::VectorXd velocity;                  ///< generalised velocity after the impact
-  std::vector<ContactImpulse> impulses;      ///< total impulse per contact
-  std::vector<int> ends_of_compression;      ///< per contact
-  std::vector<ImpactState> states;           ///< the state sequence, terminal state (no active contact) last
-  std::vector<ContactEvent> events;          ///< every contact event in order
-  std::vector<ImpactSnapshot> samples;       ///< impulse curve, when SolverOptions::record_samples
+  Eigen::VectorXd velocity;              ///< generalised velocity after the impact
+  std::vector<ContactImpulse> impulses;  ///< total impulse per contact
+  std::vector<int> ends_of_compression;  ///< per contact
+  std::vector<ImpactState> states;       ///< the state sequence, terminal state (no active contact) last
+  std::vector<ContactEvent> events;      ///< every contact event in order
+  std::vector<ImpactSnapshot> samples;   ///< impulse curve, when SolverOptions::record_samples
   double initial_kinetic_energy = 0.0;
   double final_kinetic_energy = 0.0;
   /// True when a contact chattered (an infinite state sequence) and the result is that sequence's limit.

@@ -16,9 +16,9 @@ struct SolverOptions
   double chatter_energy_fraction = 1e-20;
   /// The same limit is taken once a contact's stiffness has grown by this factor (k/k̄ = e^{-2j}).
   double chatter_stiffness_growth = 1e14;
-  std::size_t max_events = 200000;     ///< bound on contact events; beyond it the solve fails (never hangs)
-  std::size_t max_steps = 5000000;     ///< bound on integrator steps
-  bool record_samples = false;         ///< keep the impulse curve and energies at every integrator step
+  std::size_t max_events = 200000;  ///< bound on contact events; beyond it the solve fails (never hangs)
+  std::size_t max_steps = 5000000;  ///< bound on integrator steps
+  bool record_samples = false;      ///< keep the impulse curve and energies at every integrator step
 };
 
 }  // namespace billiard_shot_planner

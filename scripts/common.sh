@@ -1,0 +1,44 @@
+# Shared by scripts/test, scripts/demo and scripts/bench: install what is missing, then configure and build.
+# Debian 12's own ROS 1 packages live in /usr: nothing to source before the build.
+set -euo pipefail
+
+# ROS tools need Debian's python3 (catkin_pkg, rospy), not a pyenv one that may come first on PATH.
+export PATH="/usr/bin:/bin:/usr/sbin:/sbin:${PATH}"
+
+REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD_DIR="${BUILD_DIR:-${REPO_ROOT}/build}"
+
+# Every Debian package the build, tests, demo and benchmarks use (there is no rosdep on these machines).
+PACKAGES=(
+  build-essential cmake
+  catkin ros-core-dev python3-catkin-pkg
+  libeigen3-dev libboost-dev nlohmann-json3-dev
+  libgtest-dev libbenchmark-dev
+  clang-format catkin-lint
+)
+
+log() { printf '\n\033[1m== %s\033[0m\n' "$*"; }
+
+install_packages() {
+  local missing=()
+  for pkg in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
+  done
+  if ((${#missing[@]} == 0)); then
+    log "Debian packages: all present"
+    return
+  fi
+  log "Installing ${missing[*]}"
+  local sudo=""
+  [[ $(id -u) -eq 0 ]] || sudo="sudo"
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+# configure_and_build [extra cmake args...]
+configure_and_build() {
+  log "Configuring in ${BUILD_DIR}"
+  cmake -S "$REPO_ROOT" -B "$BUILD_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+  log "Building"
+  make -C "$BUILD_DIR" -j"$(nproc)" --no-print-directory
+}

@@ -1,0 +1,91 @@
+// impact_report: solves the paper's ball–ball–table examples (Table 1 / Fig. 1, Fig. 7, Fig. 9) and prints, for
+// each, the state sequence with impulses, velocities and energies at every state start, the contact events, the
+// final velocities and the energy lost, beside the paper's printed values and the converged reference values of
+// ../shared/spec/paper_errata.md.
+#include <cmath>
+#include <cstdio>
+
+#include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
+
+namespace bsp = billiard_shot_planner;
+
+namespace
+{
+struct Example
+{
+  const char* title;
+  bsp::BallBallTable collision;
+  const char* printed;    // the paper's final velocities
+  const char* converged;  // errata reference
+};
+
+void printStates(const bsp::ImpactResult& r)
+{
+  std::printf("  %-5s %10s %10s %10s %10s %10s %10s %10s\n", "state", "I1", "I2", "v1", "v2", "E1", "E2", "total E");
+  for (const bsp::ImpactState& state : r.states)
+  {
+    const bsp::ImpactSnapshot& s = state.start;
+    std::printf("  %-5s %10.6f %10.6f %10.6f %10.6f %10.6f %10.6f %10.6f\n",
+                bsp::ballBallTableStateName(state.active).c_str(), s.normal_impulses(0), s.normal_impulses(1),
+                s.velocity(0), s.velocity(1), s.strain_energies(0), s.strain_energies(1), s.total_energy());
+  }
+}
+
+void printEvents(const bsp::ImpactResult& r)
+{
+  const char* contact_names[] = {"ball-ball", "ball-table"};
+  std::printf("  events:\n");
+  for (const bsp::ContactEvent& e : r.events)
+    std::printf("    %-22s %-10s at (I1, I2) = (%.6f, %.6f)\n", bsp::toString(e.type), contact_names[e.contact],
+                e.at.normal_impulses(0), e.at.normal_impulses(1));
+}
+
+bool report(const Example& example)
+{
+  std::printf("\n%s\n", example.title);
+  const bsp::BallBallTable& c = example.collision;
+  std::printf("  m1 = %g, m2 = %.6f, k2/k1 = %g, e1 = %g, e2 = %g, v0 = %g\n", c.m1, c.m2, c.stiffness_ratio, c.e1,
+              c.e2, c.v0);
+  const auto result = bsp::solve(c);
+  if (!result)
+  {
+    std::printf("  error: %s\n", result.error().describe().c_str());
+    return false;
+  }
+  const bsp::ImpactResult& r = result.value();
+  printStates(r);
+  printEvents(r);
+  std::printf("  final velocities   v1 = %.7f, v2 = %.7f%s\n", r.velocity(0), r.velocity(1),
+              r.converged ? "  (limit of an infinite sequence)" : "");
+  std::printf("  paper's printed    %s\n  converged reference %s\n", example.printed, example.converged);
+  std::printf("  ends of compression: ball-ball %d, ball-table %d\n", r.ends_of_compression[0],
+              r.ends_of_compression[1]);
+  const double lost = r.initial_kinetic_energy - r.final_kinetic_energy;
+  std::printf("  kinetic energy %.7f -> %.7f, lost %.7f (%.2f %%)\n", r.initial_kinetic_energy, r.final_kinetic_energy,
+              lost, 100.0 * lost / r.initial_kinetic_energy);
+  return true;
+}
+}  // namespace
+
+int main()
+{
+  const double m2 = 2.0 / std::sqrt(3.0);
+  const Example examples[] = {
+      {"Table 1 / Fig. 1 and 8: collision with energy loss",
+       {1.0, m2, 1.0, 0.9, 0.7, -1.0},
+       "v1 = 0.61377, v2 = 0.20947",
+       "v1 = 0.6139494, v2 = 0.2097195"},
+      {"Fig. 7: elastic collision",
+       {1.0, m2, 1.0, 1.0, 1.0, -1.0},
+       "v1 = 0.94484, v2 = 0.30376",
+       "v1 = 0.9451146, v2 = 0.3040649"},
+      {"Fig. 9: restarts of compression (m2 = 0.5)",
+       {1.0, 0.5, 1.0, 0.9, 0.7, -1.0},
+       "(sequence printed as S1, S3, S4; see errata section 3)",
+       "v1 = 0.6368395, v2 = 0.1558096, S1, S2, S4"},
+  };
+  bool ok = true;
+  for (const Example& example : examples)
+    ok = report(example) && ok;
+  return ok ? 0 : 1;
+}
