@@ -4,6 +4,13 @@ namespace billiard_shot_planner
 {
 namespace detail
 {
+namespace
+{
+/// Smallest spring length (dimensionless) used to turn a sliding contact's direction: bounds the turning rate in
+/// the last instants before separation, where the friction force is vanishing anyway.
+constexpr double SLIP_LENGTH_FLOOR = 1e-9;
+}  // namespace
+
 ContactDynamics::ContactDynamics(const ContactSpace& space, const std::vector<ContactState>& contacts)
     : space_(space), contacts_(contacts)
 {
@@ -12,23 +19,10 @@ ContactDynamics::ContactDynamics(const ContactSpace& space, const std::vector<Co
 
 void ContactDynamics::refresh()
 {
-  rigid_rows_.clear();
+  rigid_contacts_.clear();
   for (std::size_t i = 0; i < contacts_.size(); ++i)
     if (contacts_[i].phase == NormalPhase::RigidLink)
-      rigid_rows_.push_back(space_.offset[i]);
-  if (rigid_rows_.empty())
-    return;
-  const auto n = static_cast<Eigen::Index>(rigid_rows_.size());
-  rigid_coupling_.resize(n, space_.size);
-  Eigen::MatrixXd block(n, n);
-  for (Eigen::Index a = 0; a < n; ++a)
-  {
-    rigid_coupling_.row(a) = space_.delassus.row(rigid_rows_[a]);
-    for (Eigen::Index b = 0; b < n; ++b)
-      block(a, b) = space_.delassus(rigid_rows_[a], rigid_rows_[b]);
-  }
-  // Redundant links (a singular block) get the least-norm constraint forces.
-  rigid_solver_.compute(block);
+      rigid_contacts_.push_back(i);
 }
 
 Eigen::VectorXd ContactDynamics::relativeVelocity(const double* y) const
@@ -36,7 +30,7 @@ Eigen::VectorXd ContactDynamics::relativeVelocity(const double* y) const
   return space_.w0 + space_.delassus * Eigen::Map<const Eigen::VectorXd>(y, space_.size);
 }
 
-Eigen::VectorXd ContactDynamics::forces(const double* y) const
+Eigen::VectorXd ContactDynamics::springForces(const double* y) const
 {
   const double* s = y + space_.size;
   Eigen::VectorXd force = Eigen::VectorXd::Zero(space_.size);
@@ -46,30 +40,54 @@ Eigen::VectorXd ContactDynamics::forces(const double* y) const
     const int row = space_.offset[i];
     if (contact.compliant())
       force(row) = -contact.stiffness * s[row];
-    if (contact.active() && space_.dim[i] == 3)
-    {
-      force(row + 1) = -contact.kappa * s[row + 1];
-      force(row + 2) = -contact.kappa * s[row + 2];
-    }
-  }
-  if (!rigid_rows_.empty())
-  {
-    // Keep every rigid link's normal velocity constant (zero): W_RR F_R = −W_R· F_rest.
-    const Eigen::VectorXd link_forces = rigid_solver_.solve(-(rigid_coupling_ * force));
-    for (std::size_t a = 0; a < rigid_rows_.size(); ++a)
-      force(rigid_rows_[a]) = link_forces(static_cast<Eigen::Index>(a));
+    if (!contact.active() || space_.dim[i] != 3)
+      continue;
+    if (!contact.slipping)
+      force.segment<2>(row + 1) = -contact.kappa * Eigen::Vector2d(s[row + 1], s[row + 2]);
+    else if (contact.compliant())
+      // Sliding: friction on the cone, −μ F_n ŝ. Equal to −κ s_t on the exact solution, but bounded by the cone
+      // even where the spring shrinks to nothing at separation and its integrated length loses accuracy.
+      force.segment<2>(row + 1) = -contact.friction * force(row) * springDirection(i, y);
   }
   return force;
+}
+
+Eigen::VectorXd ContactDynamics::forces(const double* y) const
+{
+  Eigen::VectorXd force = springForces(y);
+  if (rigid_contacts_.empty())
+    return force;
+  // Rigid links: unknown normal forces f keep their normal velocities constant (zero), (W F)_n = 0. A sliding
+  // link's friction, −μ f ŝ, depends on its own unknown, so each link contributes a column B_r of F = F_s + B f.
+  const auto links = static_cast<Eigen::Index>(rigid_contacts_.size());
+  Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(space_.size, links);
+  for (Eigen::Index r = 0; r < links; ++r)
+  {
+    const std::size_t i = rigid_contacts_[r];
+    const int row = space_.offset[i];
+    basis(row, r) = 1.0;
+    if (contacts_[i].slipping)
+      basis.block<2, 1>(row + 1, r) = -contacts_[i].friction * springDirection(i, y);
+  }
+  Eigen::MatrixXd normal_rows(links, space_.size);
+  for (Eigen::Index r = 0; r < links; ++r)
+    normal_rows.row(r) = space_.delassus.row(space_.offset[rigid_contacts_[r]]);
+  // Redundant links (a singular system) get the least-norm forces.
+  const Eigen::VectorXd link_forces =
+      (normal_rows * basis).completeOrthogonalDecomposition().solve(-(normal_rows * force));
+  return force + basis * link_forces;
 }
 
 double ContactDynamics::strainEnergy(std::size_t contact, const double* y) const
 {
   const ContactState& state = contacts_[contact];
   const double* s = y + space_.size + space_.offset[contact];
-  double energy = state.compliant() ? 0.5 * state.stiffness * s[0] * s[0] : 0.0;
-  if (space_.dim[contact] == 3)
-    energy += 0.5 * state.kappa * (s[1] * s[1] + s[2] * s[2]);
-  return energy;
+  const double normal = state.compliant() ? 0.5 * state.stiffness * s[0] * s[0] : 0.0;
+  if (space_.dim[contact] != 3 || !state.active())
+    return normal;
+  if (state.slipping)  // on the cone: E_t = μ²η²E_n (the spring state only carries the direction)
+    return normal * (1.0 + state.friction * state.friction * state.eta2());
+  return normal + 0.5 * state.kappa * (s[1] * s[1] + s[2] * s[2]);
 }
 
 Eigen::Vector2d ContactDynamics::springDirection(std::size_t contact, const double* y) const
@@ -90,7 +108,8 @@ double ContactDynamics::slidingSpeed(std::size_t contact, const double* y, const
   return springDirection(contact, y).dot(tangential_velocity) + state.friction * state.eta2() * w(row);
 }
 
-void ContactDynamics::springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w, double* rates) const
+void ContactDynamics::springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w,
+                                  const Eigen::VectorXd& force, double* rates) const
 {
   const ContactState& state = contacts_[contact];
   const int row = space_.offset[contact];
@@ -102,16 +121,25 @@ void ContactDynamics::springRates(std::size_t contact, const double* y, const Ei
   rates[0] = state.compliant() ? w(row) : 0.0;
   if (dim != 3)
     return;
-  rates[1] = w(row + 1);
-  rates[2] = w(row + 2);
-  if (state.slipping)
+  const Eigen::Vector2d v_t(w(row + 1), w(row + 2));
+  Eigen::Map<Eigen::Vector2d> tangential_rate(rates + 1);
+  if (!state.slipping)
   {
-    // Slip: the contact particle slides at speed σ along the spring direction (spec §2.6).
-    const Eigen::Vector2d direction = springDirection(contact, y);
-    const double sigma = slidingSpeed(contact, y, w);
-    rates[1] -= sigma * direction.x();
-    rates[2] -= sigma * direction.y();
+    tangential_rate = v_t;  // stick: the contact particle is at rest on B (spec §2.6)
+    return;
   }
+  // Slip: ṡ_t = v_t − σŝ (spec §2.6), whose radial part only keeps |s_t| = μη²|s_n| on the cone. The friction is
+  // −μF_nŝ, so only the direction ŝ matters: the state carries it at a fixed length (never through zero, where it
+  // would flip) and turns it at the physical rate |(I − ŝŝᵀ)v_t| / ρ, with ρ = μF_n/κ the cone's spring length,
+  // floored where the spring vanishes at separation (there the friction vanishes too).
+  const double* s = y + space_.size + row;
+  const Eigen::Vector2d carrier(s[1], s[2]);
+  const double length = carrier.norm();
+  if (length == 0.0)
+    return;
+  const Eigen::Vector2d direction = carrier / length;
+  const double cone_length = std::max(state.friction * force(row) / state.kappa, SLIP_LENGTH_FLOOR);
+  tangential_rate = (length / cone_length) * (v_t - direction * direction.dot(v_t));
 }
 
 void ContactDynamics::operator()(const OdeState& y, OdeState& dydt, double /*t*/) const
@@ -121,7 +149,7 @@ void ContactDynamics::operator()(const OdeState& y, OdeState& dydt, double /*t*/
   for (int r = 0; r < space_.size; ++r)
     dydt[r] = force(r);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
-    springRates(i, y.data(), w, dydt.data() + space_.size + space_.offset[i]);
+    springRates(i, y.data(), w, force, dydt.data() + space_.size + space_.offset[i]);
 }
 
 }  // namespace detail

@@ -17,14 +17,15 @@ using OdeState = std::vector<double>;
 ///
 /// The ODE state is [I, s]: accumulated contact impulses and spring deformations, both of length
 /// ContactSpace::size. Forces follow from the springs (F = −k s_n, −κ s_t), except at rigid links whose normal
-/// force is the constraint force keeping their normal velocity at zero. Holds references: the owner keeps the
+/// force is the constraint force keeping their normal velocity at zero. A sliding contact's friction is
+/// −μ F_n ŝ: its tangential spring then carries the slip direction ŝ (spec §2.6). Holds references: the owner keeps the
 /// space and the contact states alive and calls refresh() after every discrete transition.
 class ContactDynamics
 {
 public:
   ContactDynamics(const ContactSpace& space, const std::vector<ContactState>& contacts);
 
-  /// Recomputes what depends on the discrete state (the rigid-link constraint solve).
+  /// Recomputes what depends on the discrete state (which contacts are rigid links).
   void refresh();
 
   Eigen::VectorXd relativeVelocity(const double* y) const;
@@ -42,13 +43,14 @@ public:
   void operator()(const OdeState& y, OdeState& dydt, double /*t*/) const;
 
 private:
-  void springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w, double* rates) const;
+  void springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w, const Eigen::VectorXd& force,
+                   double* rates) const;
+  /// Forces of the springs alone (rigid-link normals and sliding-link friction left at zero).
+  Eigen::VectorXd springForces(const double* y) const;
 
   const ContactSpace& space_;
   const std::vector<ContactState>& contacts_;
-  std::vector<int> rigid_rows_;
-  Eigen::MatrixXd rigid_coupling_;  ///< rows of W belonging to rigid links
-  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> rigid_solver_;
+  std::vector<std::size_t> rigid_contacts_;
 };
 
 }  // namespace detail

@@ -24,6 +24,9 @@ using DenseStepper = odeint::bulirsch_stoer_dense_out<OdeState>;
 /// catches transitions that fire and reset within one step.
 constexpr int SAMPLES_PER_STEP = 4;
 
+/// Zero-time transitions one contact may make at one instant (see ImpactSolver::settle).
+constexpr int MAX_SWITCHES_PER_INSTANT = 6;
+
 struct FiredGuard
 {
   Guard guard;
@@ -50,6 +53,9 @@ public:
 
   Expected<ImpactResult> run()
   {
+    chooseRestingModes(dynamics_, y_, contacts_, space_);
+    for (const ContactState& contact : contacts_)
+      result_.initially_slipping.push_back(contact.active() && contact.slipping);
     if (auto status = settle(); !status)
       return status.error();
     while (anyActive())
@@ -126,9 +132,17 @@ private:
   Status settle()
   {
     dynamics_.refresh();
-    while (auto guard = immediateTransition(evaluateKinematics(dynamics_, y_.data()), contacts_, space_))
+    // A contact whose rigid-link force and grazing acceleration disagree in sign (friction coupling, as in
+    // Painlevé's paradox) could switch forever at one instant: after a few switches it is left as it is, and its
+    // guards decide from then on.
+    std::vector<int> switches(contacts_.size(), 0);
+    std::vector<bool> settled(contacts_.size(), false);
+    while (auto guard = immediateTransition(evaluateKinematics(dynamics_, y_.data()), contacts_, space_, settled))
+    {
       if (auto status = fire(*guard); !status)
         return status;
+      settled[guard->contact] = ++switches[guard->contact] >= MAX_SWITCHES_PER_INSTANT;
+    }
     std::vector<std::size_t> active = activeSet();
     if (result_.states.empty() || result_.states.back().active != active)
       result_.states.push_back({std::move(active), snapshot(y_.data(), t_)});

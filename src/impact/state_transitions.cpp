@@ -41,6 +41,18 @@ void chooseInitialMode(ContactState& contact, const Eigen::VectorXd& velocity, c
   }
 }
 
+/// Puts a contact into slip along `direction`. Its tangential spring state becomes the unit carrier of the slip
+/// direction (see ContactDynamics::springRates).
+void startSlip(ContactState& contact, const Eigen::Vector2d& direction, double* y, const ContactSpace& space,
+               std::size_t index)
+{
+  contact.slipping = true;
+  contact.slip_direction = direction;
+  double* s = springs(y, space, index);
+  s[1] = direction.x();
+  s[2] = direction.y();
+}
+
 bool isChattering(const ContactState& contact, double stored_energy, const ChatterLimit& chatter)
 {
   if (contact.restitution == 0.0)
@@ -80,13 +92,43 @@ std::vector<ContactEventType> endCompression(std::size_t index, double* y, std::
   return {ContactEventType::EndOfCompression};
 }
 
-void activate(std::size_t index, const Kinematics& kinematics, double* y, std::vector<ContactState>& contacts,
-              const ContactSpace& space)
+/// A contact of infinite stiffness (a former chattering or plastic one) that is approached at a finite speed: an
+/// instantaneous impact of that contact alone, v_n ← −e v_n, during which the other links keep their normal
+/// velocities and every compliant force is finite (so gives no impulse). Returns whether it separates at once.
+bool rigidImpact(std::size_t index, const Kinematics& kinematics, double* y, const std::vector<ContactState>& contacts,
+                 const ContactSpace& space)
+{
+  std::vector<int> rows{space.offset[index]};
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    if (i != index && contacts[i].phase == NormalPhase::RigidLink)
+      rows.push_back(space.offset[i]);
+  const auto n = static_cast<Eigen::Index>(rows.size());
+  Eigen::MatrixXd block(n, n);
+  for (Eigen::Index a = 0; a < n; ++a)
+    for (Eigen::Index b = 0; b < n; ++b)
+      block(a, b) = space.delassus(rows[a], rows[b]);
+  Eigen::VectorXd change = Eigen::VectorXd::Zero(n);
+  const double approach = kinematics.velocity(rows[0]);
+  change(0) = -(1.0 + contacts[index].restitution) * approach;
+  const Eigen::VectorXd impulse = block.completeOrthogonalDecomposition().solve(change);
+  for (Eigen::Index a = 0; a < n; ++a)
+    y[rows[a]] += impulse(a);
+  return contacts[index].restitution > 0.0;
+}
+
+std::vector<ContactEventType> activate(std::size_t index, const Kinematics& kinematics, double* y,
+                                       std::vector<ContactState>& contacts, const ContactSpace& space)
 {
   ContactState& contact = contacts[index];
   relaxSprings(y, space, index);
+  const double approach = kinematics.velocity(space.offset[index]);
+  if (contact.rigid && approach < -VELOCITY_TOLERANCE && rigidImpact(index, kinematics, y, contacts, space))
+    return {ContactEventType::Reactivation, ContactEventType::Separation};
   contact.phase = contact.rigid ? NormalPhase::RigidLink : NormalPhase::Compression;
   chooseInitialMode(contact, kinematics.velocity, space, index);
+  if (contact.slipping)
+    startSlip(contact, contact.slip_direction, y, space, index);
+  return {ContactEventType::Reactivation};
 }
 }  // namespace
 
@@ -170,20 +212,25 @@ std::vector<ContactEventType> applyTransition(const Guard& guard, const Kinemati
       relaxSprings(y, space, guard.contact);
       break;
     case ContactEventType::Reactivation:
-      activate(guard.contact, kinematics, y, contacts, space);  // paper §3.3 (iii): k kept
-      break;
+      return activate(guard.contact, kinematics, y, contacts, space);  // paper §3.3 (iii): k kept
     case ContactEventType::StickToSlip:
     {
       const int row = space.offset[guard.contact];
       const Eigen::Vector2d force(kinematics.force(row + 1), kinematics.force(row + 2));
-      contact.slipping = true;
-      // The spring points against its force; keep that direction while the spring is short.
-      if (force.norm() > 0.0)
-        contact.slip_direction = -force.normalized();
+      // The spring points against its force.
+      startSlip(contact, force.norm() > 0.0 ? Eigen::Vector2d(-force.normalized()) : contact.slip_direction, y, space,
+                guard.contact);
       break;
     }
     case ContactEventType::SlipToStick:
       contact.slipping = false;
+      {
+        // While sliding the friction came from the normal force; from now on the spring holds that force.
+        double* spring = springs(y, space, guard.contact);
+        const int row = space.offset[guard.contact];
+        spring[1] = -kinematics.force(row + 1) / contact.kappa;
+        spring[2] = -kinematics.force(row + 2) / contact.kappa;
+      }
       break;
     case ContactEventType::RigidLink:
       break;
@@ -192,11 +239,13 @@ std::vector<ContactEventType> applyTransition(const Guard& guard, const Kinemati
 }
 
 std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std::vector<ContactState>& contacts,
-                                         const ContactSpace& space)
+                                         const ContactSpace& space, const std::vector<bool>& settled)
 {
   Eigen::VectorXd acceleration;
   for (std::size_t i = 0; i < contacts.size(); ++i)
   {
+    if (settled[i])
+      continue;
     const int row = space.offset[i];
     const double v_n = kinematics.velocity(row);
     const double s_n = kinematics.y[space.size + row];
@@ -227,6 +276,40 @@ std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std
     }
   }
   return std::nullopt;
+}
+
+void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vector<ContactState>& contacts,
+                        const ContactSpace& space)
+{
+  const Eigen::VectorXd w = dynamics.relativeVelocity(y.data());
+  OdeState rates(y.size());
+  dynamics(y, rates, 0.0);
+  // J = d²w/dt² = W dF/dt, with dF/dt = −k ṡ_n, −κ ṡ_t for every spring.
+  Eigen::VectorXd force_rate = Eigen::VectorXd::Zero(space.size);
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+  {
+    const int row = space.offset[i];
+    const double* spring_rate = rates.data() + space.size + row;
+    if (contacts[i].compliant())
+      force_rate(row) = -contacts[i].stiffness * spring_rate[0];
+    if (contacts[i].compliant() && space.dim[i] == 3)
+      force_rate.segment<2>(row + 1) = -contacts[i].kappa * Eigen::Vector2d(spring_rate[1], spring_rate[2]);
+  }
+  const Eigen::VectorXd jerk = space.delassus * force_rate;
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+  {
+    const int row = space.offset[i];
+    if (!contacts[i].compliant() || space.dim[i] != 3 || w.segment<3>(row).norm() > VELOCITY_TOLERANCE)
+      continue;
+    const Eigen::Vector2d j_t = jerk.segment<2>(row + 1);
+    const double bound = contacts[i].friction * contacts[i].eta2() * std::abs(jerk(row));
+    if (j_t.norm() > bound * (1.0 + 1e-12) + VELOCITY_TOLERANCE * jerk.norm())
+      contacts[i].slip_direction = j_t.normalized();
+    contacts[i].slipping = j_t.norm() > bound * (1.0 + 1e-12) + VELOCITY_TOLERANCE * jerk.norm();
+  }
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    if (contacts[i].active() && contacts[i].slipping)
+      startSlip(contacts[i], contacts[i].slip_direction, y.data(), space, i);
 }
 
 std::vector<ContactState> initialContactStates(const ImpactProblem& problem, const ContactSpace& space)

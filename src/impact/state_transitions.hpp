@@ -54,9 +54,16 @@ std::vector<ContactEventType> applyTransition(const Guard& guard, const Kinemati
 
 /// A transition that must happen at once in the current configuration, without any time passing: an inactive
 /// contact that approaches (or is about to), a rigid link whose force is not compressive, a contact in
-/// compression that never loaded and is opening.
+/// compression that never loaded and is opening. Contacts marked `settled` are left as they are.
 std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std::vector<ContactState>& contacts,
-                                         const ContactSpace& space);
+                                         const ContactSpace& space, const std::vector<bool>& settled);
+
+/// Initial tangential mode of contacts that start at rest relative to each other (spec §2.8b, the ball on the
+/// cloth at the first instant of a shot): the limit of the spring ratio is set by J = d²w/dt² at 0⁺, so the contact
+/// sticks iff |J_t| ≤ μη²|J_n|, and otherwise slips along Ĵ_t.
+/// Also places the slip-direction carrier of every contact that starts slipping.
+void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vector<ContactState>& contacts,
+                        const ContactSpace& space);
 
 /// Initial discrete state: every contact whose bodies approach or touch (normal velocity ≤ 0) starts compressing.
 std::vector<ContactState> initialContactStates(const ImpactProblem& problem, const ContactSpace& space);

@@ -2,35 +2,21 @@
 
 #include <cmath>
 
+#include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
 
 namespace billiard_shot_planner
 {
 namespace
 {
-Status requirePositive(double value, const char* field)
-{
-  if (!std::isfinite(value) || value <= 0.0)
-    return invalidArgument(field, "must be finite and > 0, got " + std::to_string(value));
-  return {};
-}
-
-Status requireRestitution(double value, const char* field)
-{
-  if (!std::isfinite(value) || value < 0.0 || value > 1.0)
-    return invalidArgument(field, "must be in [0, 1], got " + std::to_string(value));
-  return {};
-}
-
 Status check(const BallBallTable& c)
 {
-  for (Status status :
-       {requirePositive(c.m1, "m1"), requirePositive(c.m2, "m2"), requirePositive(c.stiffness_ratio, "stiffness_ratio"),
-        requireRestitution(c.e1, "e1"), requireRestitution(c.e2, "e2")})
-    if (!status)
-      return status;
-  if (!std::isfinite(c.v0))
-    return invalidArgument("v0", "must be finite");
+  if (Status status =
+          firstError({requirePositive(c.m1, "m1"), requirePositive(c.m2, "m2"),
+                      requirePositive(c.stiffness_ratio, "stiffness_ratio"), requireUnitInterval(c.e1, "e1"),
+                      requireUnitInterval(c.e2, "e2"), requireFinite(c.v0, "v0")});
+      !status)
+    return status;
   if (c.v0 >= 0.0)
     return Error{ErrorCode::NoApproachingContact, "v0", "must be < 0 (ball 1 moving down onto ball 2)"};
   return {};

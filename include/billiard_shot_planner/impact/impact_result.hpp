@@ -60,6 +60,7 @@ struct ImpactResult
   Eigen::VectorXd velocity;              ///< generalised velocity after the impact
   std::vector<ContactImpulse> impulses;  ///< total impulse per contact
   std::vector<int> ends_of_compression;  ///< per contact
+  std::vector<bool> initially_slipping;  ///< per contact: tangential mode at the first instant (spec §2.8)
   std::vector<ImpactState> states;       ///< the state sequence, terminal state (no active contact) last
   std::vector<ContactEvent> events;      ///< every contact event in order
   std::vector<ImpactSnapshot> samples;   ///< impulse curve, when SolverOptions::record_samples

@@ -1,0 +1,68 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cmath>
+#include <string>
+
+#include "billiard_shot_planner/core/expected.hpp"
+
+namespace billiard_shot_planner
+{
+/// Field checks shared by every input type. Each returns an Error naming the field, or success.
+
+inline Status requireFinite(double value, const std::string& field)
+{
+  if (!std::isfinite(value))
+    return invalidArgument(field, "must be a finite number");
+  return {};
+}
+
+inline Status requirePositive(double value, const std::string& field)
+{
+  if (!std::isfinite(value) || value <= 0.0)
+    return invalidArgument(field, "must be finite and > 0, got " + std::to_string(value));
+  return {};
+}
+
+inline Status requireNonNegative(double value, const std::string& field)
+{
+  if (!std::isfinite(value) || value < 0.0)
+    return invalidArgument(field, "must be finite and >= 0, got " + std::to_string(value));
+  return {};
+}
+
+inline Status requireUnitInterval(double value, const std::string& field)
+{
+  if (!std::isfinite(value) || value < 0.0 || value > 1.0)
+    return invalidArgument(field, "must be in [0, 1], got " + std::to_string(value));
+  return {};
+}
+
+template <class Derived>
+Status requireFinite(const Eigen::MatrixBase<Derived>& value, const std::string& field)
+{
+  if (!value.allFinite())
+    return invalidArgument(field, "contains NaN or infinite entries");
+  return {};
+}
+
+/// A direction: finite and of non-zero length (it is normalised by the caller).
+inline Status requireDirection(const Eigen::Vector3d& value, const std::string& field)
+{
+  if (!value.allFinite())
+    return invalidArgument(field, "contains NaN or infinite entries");
+  if (value.norm() < 1e-12)
+    return invalidArgument(field, "has zero length");
+  return {};
+}
+
+/// The first failed check of a list, or success.
+inline Status firstError(std::initializer_list<Status> checks)
+{
+  for (const Status& status : checks)
+    if (!status)
+      return status;
+  return {};
+}
+
+}  // namespace billiard_shot_planner

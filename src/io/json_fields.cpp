@@ -1,0 +1,149 @@
+#include "json_fields.hpp"
+
+namespace billiard_shot_planner
+{
+namespace json_io
+{
+Expected<double> number(const json& object, const std::string& key, std::optional<double> fallback)
+{
+  if (!object.contains(key))
+  {
+    if (fallback)
+      return *fallback;
+    return invalidArgument(key, "is required");
+  }
+  const json& value = object.at(key);
+  if (!value.is_number())
+    return invalidArgument(key, "must be a number");
+  return value.get<double>();
+}
+
+Expected<std::vector<double>> numbers(const json& object, const std::string& key)
+{
+  if (!object.contains(key))
+    return invalidArgument(key, "is required");
+  const json& value = object.at(key);
+  if (!value.is_array())
+    return invalidArgument(key, "must be an array of numbers");
+  std::vector<double> out;
+  for (const json& item : value)
+  {
+    if (!item.is_number())
+      return invalidArgument(key, "must be an array of numbers");
+    out.push_back(item.get<double>());
+  }
+  return out;
+}
+
+Expected<SolverOptions> solverOptions(const json& request)
+{
+  SolverOptions options;
+  if (!request.contains("solver"))
+    return options;
+  const json& solver = request.at("solver");
+  if (!solver.is_object())
+    return invalidArgument("solver", "must be an object");
+  for (auto [key, target] : {std::pair{"relative_tolerance", &options.relative_tolerance},
+                             std::pair{"absolute_tolerance", &options.absolute_tolerance}})
+  {
+    auto value = number(solver, key, *target);
+    if (!value)
+      return invalidArgument(std::string("solver.") + key, value.error().message);
+    if (!(value.value() > 0.0 && value.value() < 1e-2))
+      return invalidArgument(std::string("solver.") + key, "must be in (0, 0.01)");
+    *target = value.value();
+  }
+  auto max_events = number(solver, "max_events", static_cast<double>(options.max_events));
+  if (!max_events || !(max_events.value() >= 1.0 && max_events.value() <= 1e9))
+    return invalidArgument("solver.max_events", "must be a number in [1, 1e9]");
+  options.max_events = static_cast<std::size_t>(max_events.value());
+  if (solver.contains("record_samples"))
+  {
+    if (!solver.at("record_samples").is_boolean())
+      return invalidArgument("solver.record_samples", "must be true or false");
+    options.record_samples = solver.at("record_samples").get<bool>();
+  }
+  return options;
+}
+
+std::vector<double> toVector(const Eigen::VectorXd& v)
+{
+  return std::vector<double>(v.data(), v.data() + v.size());
+}
+
+Expected<Eigen::Vector3d> vector3(const json& object, const std::string& key, std::optional<Eigen::Vector3d> fallback)
+{
+  if (!object.contains(key))
+  {
+    if (fallback)
+      return *fallback;
+    return invalidArgument(key, "is required");
+  }
+  auto values = numbers(object, key);
+  if (!values)
+    return values.error();
+  if (values.value().size() != 3)
+    return invalidArgument(key, "must be [x, y, z]");
+  return Eigen::Vector3d(values.value()[0], values.value()[1], values.value()[2]);
+}
+
+Expected<json> object(const json& parent, const std::string& key, bool required)
+{
+  if (!parent.contains(key))
+  {
+    if (required)
+      return invalidArgument(key, "is required");
+    return json::object();
+  }
+  if (!parent.at(key).is_object())
+    return invalidArgument(key, "must be an object");
+  return parent.at(key);
+}
+
+Error nested(const std::string& prefix, Error error)
+{
+  error.field = error.field.empty() ? prefix : prefix + "." + error.field;
+  return error;
+}
+
+json snapshotJson(const ImpactSnapshot& snap)
+{
+  return json{{"time", snap.time},
+              {"impulses", toVector(snap.normal_impulses)},
+              {"velocities", toVector(snap.velocity)},
+              {"strain_energies", toVector(snap.strain_energies)},
+              {"total_energy", snap.total_energy()}};
+}
+
+/// The parts of a result that every problem reports the same way.
+json commonResultJson(const ImpactResult& result, const std::vector<std::string>& contact_names)
+{
+  json events = json::array();
+  for (const ContactEvent& event : result.events)
+  {
+    json e = snapshotJson(event.at);
+    e["type"] = toString(event.type);
+    e["contact"] = event.contact;
+    if (event.contact < contact_names.size())
+      e["contact_name"] = contact_names[event.contact];
+    events.push_back(e);
+  }
+  json out{{"ends_of_compression", result.ends_of_compression},
+           {"converged", result.converged},
+           {"events", events},
+           {"energy",
+            {{"initial", result.initial_kinetic_energy},
+             {"final", result.final_kinetic_energy},
+             {"lost", result.initial_kinetic_energy - result.final_kinetic_energy}}}};
+  if (!result.samples.empty())
+  {
+    json samples = json::array();
+    for (const ImpactSnapshot& snap : result.samples)
+      samples.push_back(snapshotJson(snap));
+    out["samples"] = samples;
+  }
+  return out;
+}
+
+}  // namespace json_io
+}  // namespace billiard_shot_planner

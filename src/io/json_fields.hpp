@@ -1,0 +1,46 @@
+#pragma once
+
+// Reading and writing the JSON of impact_solve: typed field access whose errors name the field.
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "billiard_shot_planner/core/expected.hpp"
+#include "billiard_shot_planner/impact/impact_result.hpp"
+#include "billiard_shot_planner/impact/solver_options.hpp"
+
+namespace billiard_shot_planner
+{
+namespace json_io
+{
+using nlohmann::json;
+
+/// object[key] as a number; `fallback` when absent (required when there is none).
+Expected<double> number(const json& object, const std::string& key, std::optional<double> fallback = std::nullopt);
+/// object[key] as an array of numbers.
+Expected<std::vector<double>> numbers(const json& object, const std::string& key);
+/// object[key] as [x, y, z]; `fallback` when absent.
+Expected<Eigen::Vector3d> vector3(const json& object, const std::string& key,
+                                  std::optional<Eigen::Vector3d> fallback = std::nullopt);
+/// object[key] as an object (an empty one when absent and optional).
+Expected<json> object(const json& parent, const std::string& key, bool required);
+/// The optional "solver" object.
+Expected<SolverOptions> solverOptions(const json& request);
+/// An error from a nested object, its field prefixed with the object's name ("cue_contact.friction").
+Error nested(const std::string& prefix, Error error);
+
+std::vector<double> toVector(const Eigen::VectorXd& v);
+json snapshotJson(const ImpactSnapshot& snap);
+/// events, ends_of_compression, converged, energy, samples: what every problem reports the same way.
+json commonResultJson(const ImpactResult& result, const std::vector<std::string>& contact_names = {});
+
+/// The problems, one function each (json_collisions.cpp, json_strike.cpp).
+Expected<json> solveBallBallTable(const json& request, const SolverOptions& options);
+Expected<json> solveChain(const json& request, const SolverOptions& options);
+Expected<json> solveCueStrike(const json& request, const SolverOptions& options);
+Expected<json> solveBallTable(const json& request, const SolverOptions& options);
+
+}  // namespace json_io
+}  // namespace billiard_shot_planner

@@ -1,0 +1,117 @@
+#include "billiard_shot_planner/scenarios/cue_strike.hpp"
+
+#include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
+#include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
+#include "surface_contact_checks.hpp"
+
+namespace billiard_shot_planner
+{
+namespace
+{
+/// Tolerance on n̂·ẑ = 0 for a hit exactly on the equator.
+constexpr double EQUATOR_TOLERANCE = 1e-12;
+
+Status check(const CueStrike& s)
+{
+  return firstError({requirePositive(s.cue_mass, "cue_mass"), requireDirection(s.cue_direction, "cue_direction"),
+                     requirePositive(s.cue_speed, "cue_speed"), requirePositive(s.ball_mass, "ball_mass"),
+                     requirePositive(s.ball_radius, "ball_radius"), requireDirection(s.hit_normal, "hit_normal"),
+                     validate(s.cue_contact, "cue_contact"), validate(s.table_contact, "table_contact"),
+                     requirePositive(s.stiffness_ratio, "stiffness_ratio")});
+}
+
+/// The assumptions of paper §8 under which both impacts are active from the start.
+Status checkGeometry(const Eigen::Vector3d& n, const Eigen::Vector3d& c)
+{
+  if (!(n.dot(c) < 0.0))
+    return Error{
+        ErrorCode::InvalidShot, "cue_direction",
+        "the cue does not approach the ball at the hit point (n.c = " + std::to_string(n.dot(c)) + " must be < 0)"};
+  const double height = n.z();
+  if (height < -EQUATOR_TOLERANCE || (std::abs(height) <= EQUATOR_TOLERANCE && !(c.z() < 0.0)))
+    return Error{ErrorCode::InvalidShot, "hit_normal",
+                 "the hit point must be above the ball's equator, or on it with the cue pointing down (paper "
+                 "section 8)"};
+  return {};
+}
+
+/// Generalised velocity (v_c, v, ω): the cue along ĉ, the ball's linear and angular velocity.
+ImpactProblem makeImpactProblem(const CueStrike& s, const Eigen::Vector3d& n, const Eigen::Vector3d& c)
+{
+  const double inertia = 0.4 * s.ball_mass * s.ball_radius * s.ball_radius;
+  ImpactProblem problem;
+  problem.mass_matrix = Eigen::MatrixXd::Zero(7, 7);
+  problem.mass_matrix.diagonal() << s.cue_mass, s.ball_mass, s.ball_mass, s.ball_mass, inertia, inertia, inertia;
+  problem.velocity = Eigen::VectorXd::Zero(7);
+  problem.velocity(0) = s.cue_speed;
+
+  // Cue–ball: A = cue, B = ball at r n̂, so w = (d·ĉ) v_c − d·(v + ω × r n̂).
+  const Eigen::Matrix3d cue_frame = contactFrame(n);
+  Eigen::MatrixXd cue_rows = Eigen::MatrixXd::Zero(3, 7);
+  cue_rows.col(0) = cue_frame * c;
+  cue_rows.rightCols(6) = -pointVelocityRows(cue_frame, s.ball_radius * n);
+  problem.contacts.push_back(makeContact("cue-ball", cue_rows, contactLaw(s.cue_contact, 1.0)));
+
+  // Ball–table: A = ball at −r ẑ, B = table, table axes as the contact frame.
+  Eigen::MatrixXd table_rows = Eigen::MatrixXd::Zero(3, 7);
+  table_rows.rightCols(6) = pointVelocityRows(Eigen::Matrix3d::Identity(), -s.ball_radius * Eigen::Vector3d::UnitZ());
+  problem.contacts.push_back(makeContact("ball-table", table_rows, contactLaw(s.table_contact, s.stiffness_ratio)));
+  return problem;
+}
+
+Eigen::Vector3d worldImpulse(const ContactImpulse& impulse, const Eigen::Matrix3d& frame)
+{
+  return frame.transpose() * Eigen::Vector3d(impulse.tangential.x(), impulse.tangential.y(), impulse.normal);
+}
+}  // namespace
+
+Expected<Eigen::Vector3d> hitNormal(const Eigen::Vector3d& axis_point, const Eigen::Vector3d& direction,
+                                    const Eigen::Vector3d& ball_centre, double ball_radius)
+{
+  if (Status status =
+          firstError({requireFinite(axis_point, "axis_point"), requireDirection(direction, "direction"),
+                      requireFinite(ball_centre, "ball_centre"), requirePositive(ball_radius, "ball_radius")});
+      !status)
+    return status.error();
+  const Eigen::Vector3d c = direction.normalized();
+  const Eigen::Vector3d offset = axis_point - ball_centre;
+  const double b = c.dot(offset);
+  const double discriminant = b * b - (offset.squaredNorm() - ball_radius * ball_radius);
+  if (discriminant < 0.0)
+    return Error{ErrorCode::InvalidShot, "cue_pose",
+                 "the cue axis misses the ball (closest approach " +
+                     std::to_string(std::sqrt(offset.squaredNorm() - b * b)) + " m from its centre)"};
+  const double distance = -b - std::sqrt(discriminant);
+  // The tip may touch the ball (distance 0) or be slightly into it from round-off, never behind it.
+  if (distance < -0.01 * ball_radius)
+    return Error{ErrorCode::InvalidShot, "cue_pose", "the ball is behind the cue tip (the cue points away)"};
+  return Eigen::Vector3d((axis_point + distance * c - ball_centre) / ball_radius);
+}
+
+Expected<CueStrikeResult> solve(const CueStrike& strike, const SolverOptions& options)
+{
+  if (Status status = check(strike); !status)
+    return status.error();
+  const Eigen::Vector3d n = strike.hit_normal.normalized();
+  const Eigen::Vector3d c = strike.cue_direction.normalized();
+  if (Status status = checkGeometry(n, c); !status)
+    return status.error();
+  auto solved = solveMultipleImpact(makeImpactProblem(strike, n, c), options);
+  if (!solved)
+    return solved.error();
+  CueStrikeResult result;
+  result.impact = std::move(solved).value();
+  const Eigen::VectorXd& u = result.impact.velocity;
+  result.cue_velocity = u(0);
+  result.velocity = u.segment<3>(1);
+  result.angular_velocity = u.segment<3>(4);
+  result.hit_normal = n;
+  result.cue_direction = c;
+  result.impulse_cue = worldImpulse(result.impact.impulses[0], contactFrame(n));
+  result.impulse_table = worldImpulse(result.impact.impulses[1], Eigen::Matrix3d::Identity());
+  result.states = ballBallTableStates(result.impact);
+  result.miscue = result.impact.initially_slipping[0];
+  return result;
+}
+
+}  // namespace billiard_shot_planner

@@ -1,0 +1,17 @@
+#pragma once
+
+#include <string>
+
+#include "billiard_shot_planner/core/validation.hpp"
+#include "billiard_shot_planner/scenarios/sphere_kinematics.hpp"
+
+namespace billiard_shot_planner
+{
+inline Status validate(const SurfaceContact& surface, const std::string& field)
+{
+  return firstError({requireUnitInterval(surface.restitution, field + ".restitution"),
+                     requireNonNegative(surface.friction, field + ".friction"),
+                     requirePositive(surface.eta2, field + ".eta2")});
+}
+
+}  // namespace billiard_shot_planner

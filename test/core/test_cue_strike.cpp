@@ -1,0 +1,275 @@
+// The integrated cue strike (paper §8): the massé shot of §9.2 against the spec's converged reconstruction
+// (compliant_impact_model.md §7.4), the invariants of spec §4.4 on random shots, and invalid shots.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
+#include "billiard_shot_planner/scenarios/cue_strike.hpp"
+
+namespace bsp = billiard_shot_planner;
+
+namespace
+{
+/// The paper's massé inputs with the corrections of errata §5: m = 0.17 kg, r = 0.0286 m.
+bsp::CueStrike masse(const Eigen::Vector3d& cue_direction, double cue_eta2 = 7.0)
+{
+  bsp::CueStrike s;
+  s.cue_mass = 0.5018;
+  s.cue_direction = cue_direction;
+  s.cue_speed = 3.089095;
+  s.ball_mass = 0.17;
+  s.ball_radius = 0.0286;
+  s.hit_normal = {0.480151, -0.102889, 0.871131};
+  s.cue_contact = {0.656532, 0.7, cue_eta2};
+  s.table_contact = {0.51625, 0.152479, 10.0};
+  s.stiffness_ratio = 0.8;
+  return s;
+}
+
+bsp::CueStrikeResult solved(const bsp::CueStrike& strike)
+{
+  auto result = bsp::solve(strike);
+  EXPECT_TRUE(result.ok()) << (result.ok() ? "" : result.error().describe());
+  return result.value();
+}
+
+void expectRelative(const Eigen::Vector3d& actual, const Eigen::Vector3d& expected, double tolerance, const char* what)
+{
+  EXPECT_LE((actual - expected).norm(), tolerance * expected.norm())
+      << what << ": " << actual.transpose() << " vs " << expected.transpose();
+}
+
+/// +1 when the sliding ball's path curves left (counter-clockwise seen from above), −1 when right. The sliding
+/// friction opposes the contact slip u = v + R ẑ × ω (spec §6.2).
+int turn(const bsp::CueStrikeResult& r, double radius)
+{
+  const Eigen::Vector2d v = r.velocity.head<2>();
+  const Eigen::Vector2d u(v.x() - radius * r.angular_velocity.y(), v.y() + radius * r.angular_velocity.x());
+  const double cross = v.x() * (-u.y()) - v.y() * (-u.x());
+  return cross > 0 ? 1 : -1;
+}
+
+double kineticEnergy(const bsp::CueStrike& s, const bsp::CueStrikeResult& r)
+{
+  return 0.5 * s.cue_mass * r.cue_velocity * r.cue_velocity + 0.5 * s.ball_mass * r.velocity.squaredNorm() +
+         0.2 * s.ball_mass * s.ball_radius * s.ball_radius * r.angular_velocity.squaredNorm();
+}
+}  // namespace
+
+TEST(MasseShot, MatchesTheSpecConvergedTableForAllFourCueDirections)
+{
+  struct Row
+  {
+    Eigen::Vector3d c;
+    std::vector<std::string> states;
+    Eigen::Vector3d v, w;
+    double cue_velocity, cue_normal, cue_tangential, table_normal, table_tangential;
+  };
+  const Row rows[] = {
+      {{0.2761, -0.1388, -0.9511},
+       {"S1", "S3", "S4"},
+       {-1.42587, 0.24610, 0.45511},
+       {17.0970, 83.8724, -1.1087},
+       0.24554,
+       1.67022,
+       0.39596,
+       1.72678,
+       0.22954},
+      {{-0.2761, -0.1388, -0.9511},
+       {"S1", "S2", "S4"},
+       {-2.07330, 0.24128, 0.46729},
+       {11.6367, 25.2785, -6.1496},
+       0.34248,
+       1.39491,
+       0.20696,
+       1.39551,
+       0.15300},
+      {{-0.2761, 0.1388, -0.9511},
+       {"S1", "S2", "S4"},
+       {-2.09568, 0.52433, 0.43209},
+       {2.2641, 21.0055, 2.2622},
+       0.33885,
+       1.37476,
+       0.18669,
+       1.36262,
+       0.14565},
+      {{0.2761, 0.1388, -0.9511},
+       {"S1", "S3", "S4"},
+       {-1.44503, 0.48462, 0.51161},
+       {15.8893, 75.4765, 3.9977},
+       0.27812,
+       1.62908,
+       0.37044,
+       1.68785,
+       0.22049},
+  };
+  // Spec §7.4 gives 5–6 digits from fixed-step RK4 (Δt = 2e-4 … 5e-5): 1e-4 relative, vectors by their norm.
+  const double tol = 1e-4;
+  for (const Row& row : rows)
+  {
+    SCOPED_TRACE(testing::Message() << "c = " << row.c.transpose());
+    const auto r = solved(masse(row.c));
+    EXPECT_EQ(r.states, row.states);
+    expectRelative(r.velocity, row.v, tol, "v");
+    expectRelative(r.angular_velocity, row.w, tol, "omega");
+    EXPECT_NEAR(r.cue_velocity, row.cue_velocity, tol * row.cue_velocity);
+    const Eigen::Vector3d n = r.hit_normal;
+    const double cue_normal = r.impulse_cue.dot(n);
+    EXPECT_NEAR(cue_normal, row.cue_normal, tol * row.cue_normal);
+    EXPECT_NEAR((r.impulse_cue - cue_normal * n).norm(), row.cue_tangential, tol * row.cue_normal);
+    EXPECT_NEAR(r.impulse_table.z(), row.table_normal, tol * row.table_normal);
+    EXPECT_NEAR(r.impulse_table.head<2>().norm(), row.table_tangential, tol * row.table_normal);
+    EXPECT_FALSE(r.miscue);
+  }
+}
+
+TEST(MasseShot, PaperPredictionQualitatively)
+{
+  // Errata §5 / spec §9: with the literal cue direction the paper's (57) is a plausibility target only:
+  // sequence <S1, S2, S4>, a left-turning path, v_x ≈ −1.7 … −2.1, ω_y > 0, ω_x > 0, ω_z < 0.
+  const auto r = solved(masse({-0.2761, -0.1388, -0.9511}));
+  EXPECT_EQ(r.states, (std::vector<std::string>{"S1", "S2", "S4"}));
+  EXPECT_EQ(turn(r, 0.0286), 1);
+  EXPECT_LT(r.velocity.x(), -1.5);
+  EXPECT_GT(r.velocity.x(), -2.2);
+  EXPECT_GT(r.angular_velocity.y(), 0.0);
+  EXPECT_GT(r.angular_velocity.x(), 0.0);
+  EXPECT_LT(r.angular_velocity.z(), 0.0);
+  EXPECT_GT(r.velocity.z(), 0.0);  // the ball leaves the cloth
+}
+
+TEST(MasseShot, EtaSweepTrendOfFigure16d)
+{
+  // Spec §7.4: for the literal cue direction the path turns right for η² (cue–ball) = 2, 3, 4 and left from 5; for
+  // the (+, −) direction left at 2, right at 3–6, left from 7.
+  const Eigen::Vector3d literal(-0.2761, -0.1388, -0.9511), mirrored(0.2761, -0.1388, -0.9511);
+  const int literal_turns[] = {-1, -1, -1, 1, 1, 1};
+  const int mirrored_turns[] = {1, -1, -1, -1, -1, 1};
+  for (int k = 0; k < 6; ++k)
+  {
+    const double eta2 = 2.0 + k;
+    EXPECT_EQ(turn(solved(masse(literal, eta2)), 0.0286), literal_turns[k]) << "literal, eta2 " << eta2;
+    EXPECT_EQ(turn(solved(masse(mirrored, eta2)), 0.0286), mirrored_turns[k]) << "mirrored, eta2 " << eta2;
+  }
+}
+
+TEST(CueStrikeInvariants, RandomShots)
+{
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int checked = 0;
+  for (int k = 0; checked < 200 && k < 2000; ++k)
+  {
+    bsp::CueStrike s;
+    const double polar = std::acos(unit(rng) * 0.999), azimuth = 2 * M_PI * unit(rng);
+    s.hit_normal = {std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), std::cos(polar)};
+    s.cue_direction = Eigen::Vector3d(unit(rng) - 0.5, unit(rng) - 0.5, -unit(rng)).normalized();
+    if (s.hit_normal.dot(s.cue_direction) > -0.2)
+      continue;
+    s.cue_mass = 0.3 + unit(rng);
+    s.cue_speed = 0.5 + 5 * unit(rng);
+    s.ball_mass = 0.1 + 0.2 * unit(rng);
+    s.ball_radius = 0.025 + 0.01 * unit(rng);
+    s.cue_contact = {0.3 + 0.7 * unit(rng), unit(rng), 1 + 9 * unit(rng)};
+    s.table_contact = {0.3 + 0.7 * unit(rng), 0.4 * unit(rng), 1 + 9 * unit(rng)};
+    s.stiffness_ratio = std::exp(4 * unit(rng) - 2);
+    ++checked;
+    SCOPED_TRACE(k);
+    const auto r = solved(s);
+    const double r_ball = s.ball_radius;
+    // Angular momentum about the line through the two contact points stays zero (spec §4.4 (1)).
+    const Eigen::Vector3d moment = 0.4 * r_ball * r.angular_velocity + Eigen::Vector3d::UnitZ().cross(r.velocity);
+    const double scale = 0.4 * r_ball * r.angular_velocity.norm() + r.velocity.norm();
+    EXPECT_LE(std::abs((r.hit_normal + Eigen::Vector3d::UnitZ()).dot(moment)), 1e-9 * scale);
+    // Energy never increases (spec §4.4 (2)).
+    EXPECT_LE(kineticEnergy(s, r), 0.5 * s.cue_mass * s.cue_speed * s.cue_speed * (1 + 1e-12));
+    // Linearity in cue speed (spec §2.10).
+    bsp::CueStrike faster = s;
+    faster.cue_speed *= 2.0;
+    const auto f = solved(faster);
+    EXPECT_EQ(f.states, r.states);
+    EXPECT_LE((f.velocity - 2 * r.velocity).norm(), 1e-9 * 2 * r.velocity.norm());
+    EXPECT_LE((f.angular_velocity - 2 * r.angular_velocity).norm(), 1e-9 * 2 * r.angular_velocity.norm());
+    EXPECT_LE((f.impulse_cue - 2 * r.impulse_cue).norm(), 1e-9 * 2 * r.impulse_cue.norm());
+  }
+  EXPECT_EQ(checked, 200);
+}
+
+TEST(CueStrikeInvariants, FrictionlessCentralHitIsBallBallTable)
+{
+  // Spec §4.4 (4): μ = 0, n̂ = ẑ, ĉ = −ẑ is the paper's ball–ball–table collision with the cue as the upper ball.
+  bsp::CueStrike s;
+  s.cue_mass = 1.0;
+  s.ball_mass = 2.0 / std::sqrt(3.0);
+  s.cue_speed = 1.0;
+  s.cue_contact = {0.9, 0.0, 7.0};
+  s.table_contact = {0.7, 0.0, 10.0};
+  const auto r = solved(s);
+  const auto reference = bsp::solve(bsp::BallBallTable{1.0, s.ball_mass, 1.0, 0.9, 0.7, -1.0}).value();
+  EXPECT_EQ(r.states, bsp::ballBallTableStates(reference));
+  EXPECT_NEAR(-r.cue_velocity, reference.velocity(0), 1e-9);
+  EXPECT_NEAR(r.velocity.z(), reference.velocity(1), 1e-9);
+  EXPECT_NEAR(r.velocity.head<2>().norm(), 0.0, 1e-12);
+  EXPECT_NEAR(r.angular_velocity.norm(), 0.0, 1e-9);
+}
+
+TEST(CueStrikeInvariants, GrazingHitIsAMiscue)
+{
+  auto s = masse({-0.2761, -0.1388, -0.9511});
+  s.cue_contact.friction = 0.05;
+  s.cue_contact.eta2 = 2.0;
+  EXPECT_TRUE(solved(s).miscue);
+}
+
+TEST(CueStrikeBadInput, InvalidShotsAndFields)
+{
+  const Eigen::Vector3d c(-0.2761, -0.1388, -0.9511);
+  auto s = masse(c);
+  s.cue_direction = -c;  // pointing away
+  EXPECT_EQ(bsp::solve(s).error().code, bsp::ErrorCode::InvalidShot);
+  s = masse(c);
+  s.hit_normal = {0.6, 0.0, -0.8};  // below the equator
+  EXPECT_EQ(bsp::solve(s).error().code, bsp::ErrorCode::InvalidShot);
+  s = masse({-1, 0, 0});
+  s.hit_normal = {1, 0, 0};  // on the equator, cue horizontal
+  EXPECT_EQ(bsp::solve(s).error().code, bsp::ErrorCode::InvalidShot);
+  s = masse(c);
+  s.cue_speed = 0.0;
+  EXPECT_EQ(bsp::solve(s).error().field, "cue_speed");
+  s = masse(c);
+  s.cue_contact.friction = -0.1;
+  EXPECT_EQ(bsp::solve(s).error().field, "cue_contact.friction");
+  s = masse(c);
+  s.table_contact.eta2 = 0.0;
+  EXPECT_EQ(bsp::solve(s).error().field, "table_contact.eta2");
+  s = masse(c);
+  s.hit_normal = {NAN, 0, 1};
+  EXPECT_EQ(bsp::solve(s).error().field, "hit_normal");
+  s = masse(c);
+  s.cue_direction = Eigen::Vector3d::Zero();
+  EXPECT_EQ(bsp::solve(s).error().field, "cue_direction");
+  s = masse(c);
+  s.stiffness_ratio = -1;
+  EXPECT_EQ(bsp::solve(s).error().field, "stiffness_ratio");
+}
+
+TEST(CueStrikeGeometry, HitNormalFromTheCueAxis)
+{
+  const Eigen::Vector3d centre(0.1, -0.2, 0.0286);
+  const double r = 0.0286;
+  const Eigen::Vector3d n(0.480151, -0.102889, 0.871131);
+  const Eigen::Vector3d c(-0.2761, -0.1388, -0.9511);
+  // A point on the axis 5 cm before the hit point.
+  const Eigen::Vector3d tip = centre + r * n.normalized() - 0.05 * c.normalized();
+  const auto normal = bsp::hitNormal(tip, c, centre, r);
+  ASSERT_TRUE(normal.ok());
+  EXPECT_LT((normal.value() - n.normalized()).norm(), 1e-9);
+  // An axis that passes 2 radii from the centre misses.
+  const Eigen::Vector3d off = centre + Eigen::Vector3d(0, 0, 2 * r) - 0.05 * Eigen::Vector3d::UnitX();
+  EXPECT_EQ(bsp::hitNormal(off, Eigen::Vector3d::UnitX(), centre, r).error().code, bsp::ErrorCode::InvalidShot);
+  // The ball behind the cue.
+  EXPECT_EQ(bsp::hitNormal(centre + Eigen::Vector3d(0.1, 0, 0), Eigen::Vector3d::UnitX(), centre, r).error().code,
+            bsp::ErrorCode::InvalidShot);
+}
