@@ -2,6 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+
+#include "billiard_shot_planner/scenarios/cue_strike.hpp"
+
+namespace bsp = billiard_shot_planner;
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -72,6 +76,94 @@ TEST(ImpactSolve, BadInputExitsWithTwoAndAMessage)
        "velocities"},
       {R"({"problem": "teleport"})", "unknown problem"},
       {R"([1, 2])", "JSON object"},
+  };
+  for (const auto& c : cases)
+  {
+    const SolverRun run = runSolver(c[0]);
+    EXPECT_EQ(run.exit_code, 2) << c[0] << "\n" << run.output;
+    EXPECT_NE(run.output.find(c[1]), std::string::npos) << c[0] << "\n" << run.output;
+  }
+}
+
+TEST(ImpactSolve, CueStrikeFromTheIssue)
+{
+  const std::string shot =
+      R"({"problem": "cue_strike", "cue_mass": 0.5018, "cue_direction": [0.2761, -0.1388, -0.9511],
+          "cue_speed": 3.089095, "ball_mass": 0.1701, "ball_radius": 0.0286,
+          "hit_normal": [0.480151, -0.102889, 0.871131],
+          "cue_contact": {"restitution": 0.656532, "friction": 0.7, "eta2": 7},
+          "table_contact": {"restitution": 0.51625, "friction": 0.152479, "eta2": 10}, "stiffness_ratio": 0.8})";
+  const SolverRun run = runSolver(shot);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto out = nlohmann::json::parse(run.output);
+  EXPECT_EQ(out["states"], (std::vector<std::string>{"S1", "S3", "S4"}));
+  // The program answers what the library computes for the same strike.
+  bsp::CueStrike strike;
+  strike.cue_mass = 0.5018;
+  strike.cue_direction = {0.2761, -0.1388, -0.9511};
+  strike.cue_speed = 3.089095;
+  strike.ball_mass = 0.1701;
+  strike.ball_radius = 0.0286;
+  strike.hit_normal = {0.480151, -0.102889, 0.871131};
+  strike.cue_contact = {0.656532, 0.7, 7};
+  strike.table_contact = {0.51625, 0.152479, 10};
+  strike.stiffness_ratio = 0.8;
+  const auto expected = bsp::solve(strike).value();
+  const auto v = out["v"].get<std::vector<double>>();
+  const auto w = out["omega"].get<std::vector<double>>();
+  for (int k = 0; k < 3; ++k)
+  {
+    EXPECT_NEAR(v[k], expected.velocity(k), 1e-12);
+    EXPECT_NEAR(w[k], expected.angular_velocity(k), 1e-10);
+  }
+  // Spec §7.4, first row, is for m = 0.17: the 0.06 % heavier ball moves v by < 1e-3.
+  EXPECT_NEAR(v[0], -1.42587, 1e-3);
+  EXPECT_NEAR(v[1], 0.24610, 1e-3);
+  EXPECT_NEAR(v[2], 0.45511, 1e-3);
+  EXPECT_EQ(out["omega"].size(), 3u);
+  EXPECT_EQ(out["impulse_cue"].size(), 3u);
+  EXPECT_EQ(out["impulse_table"].size(), 3u);
+  EXPECT_TRUE(out["cue_velocity"].is_number());
+  EXPECT_EQ(out["miscue"], false);
+  EXPECT_FALSE(out["events"].empty());
+  EXPECT_TRUE(out["events"][0].contains("contact_name"));
+}
+
+TEST(ImpactSolve, CueStrikeFromTheCueAxis)
+{
+  // A slightly elevated cue aimed 1 cm above the centre: a follow shot.
+  const std::string shot =
+      R"({"problem": "cue_strike", "cue_mass": 0.5, "cue_direction": [1, 0, -0.05], "cue_speed": 2,
+          "ball_mass": 0.17, "ball_radius": 0.0286, "cue_axis_point": [-0.1, 0, 0.0436],
+          "ball_centre": [0, 0, 0.0286],
+          "cue_contact": {"restitution": 0.7, "friction": 0.6, "eta2": 7},
+          "table_contact": {"restitution": 0.5, "friction": 0.2, "eta2": 10}, "stiffness_ratio": 1})";
+  const SolverRun run = runSolver(shot);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto out = nlohmann::json::parse(run.output);
+  const auto n = out["hit_normal"].get<std::vector<double>>();
+  EXPECT_GT(n[2], 0.0);               // above the equator
+  EXPECT_LT(n[0], 0.0);               // on the side facing the cue
+  EXPECT_GT(out["v"][0].get<double>(), 0.0);      // the ball goes forward
+  EXPECT_GT(out["omega"][1].get<double>(), 0.0);  // topspin: rolling along +x turns about ẑ × x̂ = +ŷ
+}
+
+TEST(ImpactSolve, InvalidShotsExitWithTwo)
+{
+  const char* cases[][2] = {
+      {R"({"problem": "cue_strike", "cue_mass": 0.5, "cue_direction": [0, 0, 1], "cue_speed": 2, "ball_mass": 0.17,
+           "ball_radius": 0.0286, "hit_normal": [0, 0, 1], "cue_contact": {"restitution": 0.7, "friction": 0.6,
+           "eta2": 7}, "table_contact": {"restitution": 0.5, "friction": 0.2, "eta2": 10}, "stiffness_ratio": 1})",
+       "does not approach"},
+      {R"({"problem": "cue_strike", "cue_mass": 0.5, "cue_direction": [0, 0, -1], "cue_speed": 2, "ball_mass": 0.17,
+           "ball_radius": 0.0286, "hit_normal": [0, 0, 1], "cue_contact": {"restitution": 0.7, "friction": 0.6},
+           "table_contact": {"restitution": 0.5, "friction": 0.2, "eta2": 10}, "stiffness_ratio": 1})",
+       "cue_contact.eta2"},
+      {R"({"problem": "cue_strike", "cue_mass": 0.5, "cue_direction": [1, 0, -0.1], "cue_speed": 2,
+           "ball_mass": 0.17, "ball_radius": 0.0286, "cue_axis_point": [-0.1, 0.2, 0.0286],
+           "cue_contact": {"restitution": 0.7, "friction": 0.6, "eta2": 7},
+           "table_contact": {"restitution": 0.5, "friction": 0.2, "eta2": 10}, "stiffness_ratio": 1})",
+       "misses the ball"},
   };
   for (const auto& c : cases)
   {
