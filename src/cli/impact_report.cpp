@@ -1,11 +1,12 @@
 // impact_report: solves the paper's ball–ball–table examples (Table 1 / Fig. 1, Fig. 7, Fig. 9) and prints, for
 // each, the state sequence with impulses, velocities and energies at every state start, the contact events, the
 // final velocities and the energy lost, beside the paper's printed values and the converged reference values of
-// ../shared/spec/paper_errata.md.
+// ../shared/spec/paper_errata.md; then the massé cue strike of §9.2 beside the paper's prediction and measurement.
 #include <cmath>
 #include <cstdio>
 
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
+#include "billiard_shot_planner/scenarios/cue_strike.hpp"
 
 namespace bsp = billiard_shot_planner;
 
@@ -65,6 +66,51 @@ bool report(const Example& example)
               lost, 100.0 * lost / r.initial_kinetic_energy);
   return true;
 }
+void printVector(const char* label, const Eigen::Vector3d& v)
+{
+  std::printf("  %-34s (%9.5f, %9.5f, %9.5f)\n", label, v.x(), v.y(), v.z());
+}
+
+/// The massé shot of §9.2 with the errata's mass and radius and the literal cue direction.
+bool reportMasse()
+{
+  std::printf("\nThe massé shot of section 9.2 (m = 0.17 kg, r = 0.0286 m; see README for the corrections)\n");
+  bsp::CueStrike s;
+  s.cue_mass = 0.5018;
+  s.cue_direction = {-0.2761, -0.1388, -0.9511};
+  s.cue_speed = 3.089095;
+  s.ball_mass = 0.17;
+  s.ball_radius = 0.0286;
+  s.hit_normal = {0.480151, -0.102889, 0.871131};
+  s.cue_contact = {0.656532, 0.7, 7.0};
+  s.table_contact = {0.51625, 0.152479, 10.0};
+  s.stiffness_ratio = 0.8;
+  const auto result = bsp::solve(s);
+  if (!result)
+  {
+    std::printf("  error: %s\n", result.error().describe().c_str());
+    return false;
+  }
+  const bsp::CueStrikeResult& r = result.value();
+  std::printf("  states:");
+  for (const std::string& state : r.states)
+    std::printf(" %s", state.c_str());
+  std::printf("\n  events:\n");
+  const char* names[] = {"cue-ball", "ball-table"};
+  for (const bsp::ContactEvent& e : r.impact.events)
+    std::printf("    %-22s %-10s at normal impulses (%.5f, %.5f) N s\n", bsp::toString(e.type), names[e.contact],
+                e.at.normal_impulses(0), e.at.normal_impulses(1));
+  printVector("ball velocity v (m/s)", r.velocity);
+  printVector("ball angular velocity w (rad/s)", r.angular_velocity);
+  printVector("paper's prediction (57): v", {-1.67629, -0.075349, 0.637937});
+  printVector("paper's prediction (57): w", {40.3064, 83.6145, -15.4927});
+  std::printf("  %-34s (%9.5f, %9.5f)  w_xy (%8.4f, %8.4f)\n", "measured (56): v_xy", -1.67063, -0.274431, 28.4584,
+              79.1561);
+  printVector("impulse on the cue (N s)", r.impulse_cue);
+  printVector("impulse on the ball from the table", r.impulse_table);
+  std::printf("  cue velocity after: %.5f m/s along its axis; miscue: %s\n", r.cue_velocity, r.miscue ? "yes" : "no");
+  return true;
+}
 }  // namespace
 
 int main()
@@ -87,5 +133,6 @@ int main()
   bool ok = true;
   for (const Example& example : examples)
     ok = report(example) && ok;
+  ok = reportMasse() && ok;
   return ok ? 0 : 1;
 }

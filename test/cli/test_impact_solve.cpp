@@ -142,8 +142,8 @@ TEST(ImpactSolve, CueStrikeFromTheCueAxis)
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto out = nlohmann::json::parse(run.output);
   const auto n = out["hit_normal"].get<std::vector<double>>();
-  EXPECT_GT(n[2], 0.0);               // above the equator
-  EXPECT_LT(n[0], 0.0);               // on the side facing the cue
+  EXPECT_GT(n[2], 0.0);                           // above the equator
+  EXPECT_LT(n[0], 0.0);                           // on the side facing the cue
   EXPECT_GT(out["v"][0].get<double>(), 0.0);      // the ball goes forward
   EXPECT_GT(out["omega"][1].get<double>(), 0.0);  // topspin: rolling along +x turns about ẑ × x̂ = +ŷ
 }
