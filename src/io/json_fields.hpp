@@ -10,6 +10,7 @@
 #include "billiard_shot_planner/core/expected.hpp"
 #include "billiard_shot_planner/impact/impact_result.hpp"
 #include "billiard_shot_planner/impact/solver_options.hpp"
+#include "billiard_shot_planner/scenarios/cue_strike.hpp"
 
 namespace billiard_shot_planner
 {
@@ -41,6 +42,12 @@ Expected<json> solveBallBallTable(const json& request, const SolverOptions& opti
 Expected<json> solveChain(const json& request, const SolverOptions& options);
 Expected<json> solveCueStrike(const json& request, const SolverOptions& options);
 Expected<json> solveBallTable(const json& request, const SolverOptions& options);
+Expected<json> solveBallMotion(const json& request, const SolverOptions& options);
+Expected<json> solveShot(const json& request, const SolverOptions& options);
+
+/// The cue strike fields of a request (json_strike.cpp), and its result as JSON.
+Expected<CueStrike> cueStrikeFromJson(const json& request);
+json cueStrikeJson(const CueStrikeResult& result);
 
 }  // namespace json_io
 }  // namespace billiard_shot_planner

@@ -44,7 +44,9 @@ Expected<Eigen::Vector3d> hitNormalField(const json& request, const CueStrike& s
   return hitNormal(point.value(), strike.cue_direction, centre.value(), strike.ball_radius);
 }
 
-Expected<CueStrike> cueStrike(const json& request)
+}  // namespace
+
+Expected<CueStrike> cueStrikeFromJson(const json& request)
 {
   CueStrike strike;
   for (auto [name, target] : {std::pair{"cue_mass", &strike.cue_mass}, std::pair{"cue_speed", &strike.cue_speed},
@@ -74,7 +76,6 @@ Expected<CueStrike> cueStrike(const json& request)
   strike.hit_normal = normal.value();
   return strike;
 }
-}  // namespace
 
 json cueStrikeJson(const CueStrikeResult& r)
 {
@@ -92,7 +93,7 @@ json cueStrikeJson(const CueStrikeResult& r)
 
 Expected<json> solveCueStrike(const json& request, const SolverOptions& options)
 {
-  auto strike = cueStrike(request);
+  auto strike = cueStrikeFromJson(request);
   if (!strike)
     return strike.error();
   auto result = solve(strike.value(), options);

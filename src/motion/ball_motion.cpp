@@ -1,0 +1,206 @@
+#include "billiard_shot_planner/motion/ball_motion.hpp"
+
+#include <cmath>
+
+#include "../scenarios/surface_contact_checks.hpp"
+#include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
+#include "billiard_shot_planner/scenarios/cushion_impact.hpp"
+#include "phase_dynamics.hpp"
+#include "table_events.hpp"
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+namespace
+{
+/// Where one phase ends: by itself, at a cushion, in a pocket or at the time limit.
+struct SegmentEnd
+{
+  double duration;
+  MotionEventType event;
+  int cushion = -1;
+  int pocket = -1;
+};
+
+Status checkStart(const BallState& start, const Ball& ball, const Table& table)
+{
+  if (Status status = firstError({requireFinite(start.position, "position"), requireFinite(start.velocity, "v"),
+                                  requireFinite(start.angular_velocity, "omega")});
+      !status)
+    return status;
+  const double reach = cushionReach(table, ball.radius);
+  const double x = std::abs(start.position.x()), y = std::abs(start.position.y());
+  if (x > 0.5 * table.length || y > 0.5 * table.width)
+    return invalidArgument("position", "the ball is off the table");
+  if (x > 0.5 * table.length - reach + 1e-9 || y > 0.5 * table.width - reach + 1e-9)
+    return invalidArgument("position", "the ball overlaps a cushion");
+  for (std::size_t i = 0; i < table.pockets.size(); ++i)
+    if ((start.position.head<2>() - table.pockets[i].centre).norm() <= table.pockets[i].radius)
+      return invalidArgument("position", "the ball is inside pocket " + std::to_string(i) + "'s capture region");
+  return {};
+}
+
+class TrajectoryPredictor
+{
+public:
+  TrajectoryPredictor(const Ball& ball, const Table& table, const MotionParameters& p)
+      : ball_(ball), table_(table), p_(p)
+  {
+  }
+
+  Expected<BallTrajectory> run(BallState state)
+  {
+    state.position.z() = ball_.radius;
+    if (p_.planar || state.velocity.z() < 0.0)
+      state.velocity.z() = 0.0;  // planar: the paper's choice; a downward v_z is absorbed by the cloth
+    double t = 0.0;
+    trajectory_.events.push_back({MotionEventType::Start, 0.0, state});
+    while (true)
+    {
+      if (static_cast<int>(trajectory_.events.size()) >= p_.max_events || t >= p_.max_time)
+        return finish(MotionEventType::TimeLimit, MotionOutcome::TimeLimit, t, state);
+      const MotionPhase phase = classify(state, ball_.radius);
+      if (phase == MotionPhase::Stationary)
+        return finish(MotionEventType::Rest, MotionOutcome::Rest, t, state);
+      auto next = advance(phase, state, t);
+      if (!next)
+        return next.error();
+      if (next.value())
+        return trajectory_;
+    }
+  }
+
+private:
+  /// Runs one segment and its closing event. Returns true when the trajectory has ended.
+  Expected<bool> advance(MotionPhase phase, BallState& state, double& t)
+  {
+    const PhaseMotion motion = phaseMotion(phase, state, ball_, p_);
+    MotionSegment segment{phase, t, t, state, motion.acceleration, motion.angular_acceleration};
+    const SegmentEnd end = segmentEnd(segment, motion, t);
+    segment.end_time = t + end.duration;
+    trajectory_.segments.push_back(segment);
+    t = segment.end_time;
+    state = segment.at(t);
+    switch (end.event)
+    {
+      case MotionEventType::Pocketed:
+        trajectory_.events.push_back({end.event, t, state, -1, end.pocket});
+        trajectory_.outcome = MotionOutcome::Pocketed;
+        return true;
+      case MotionEventType::TimeLimit:
+        finish(end.event, MotionOutcome::TimeLimit, t, state);
+        return true;
+      case MotionEventType::CushionHit:
+        return hitCushion(end.cushion, state, t);
+      case MotionEventType::Landing:
+        return land(state, t);
+      default:
+        state = snapPhaseEnd(end.event, state, ball_.radius);
+        trajectory_.events.push_back({end.event, t, state});
+        return false;
+    }
+  }
+
+  SegmentEnd segmentEnd(const MotionSegment& segment, const PhaseMotion& motion, double t) const
+  {
+    SegmentEnd end{motion.end, motion.end_event};
+    if (p_.max_time - t < end.duration)
+      end = {p_.max_time - t, MotionEventType::TimeLimit};
+    if (auto hit = firstCushionHit(segment, table_, ball_.radius, end.duration))
+      end = {hit->time, MotionEventType::CushionHit, hit->index};
+    if (auto entry = firstPocketEntry(segment, table_, end.duration))
+      end = {entry->time, MotionEventType::Pocketed, -1, entry->index};
+    return end;
+  }
+
+  Expected<bool> hitCushion(int rail, BallState& state, double t)
+  {
+    const bool on_cloth = state.position.z() <= ball_.radius * (1.0 + 1e-9) && state.velocity.z() <= 0.0;
+    if (!on_cloth && state.position.z() - ball_.radius > table_.cushion_height)
+    {
+      trajectory_.events.push_back({MotionEventType::CushionHit, t, state, rail});
+      trajectory_.outcome = MotionOutcome::OffTable;  // the ball clears the cushion nose
+      return true;
+    }
+    CushionImpact impact{ball_.mass,
+                         ball_.radius,
+                         state.velocity,
+                         state.angular_velocity,
+                         cushionNormal(rail, table_, ball_.radius, state.position.z()),
+                         on_cloth,
+                         table_.cushion,
+                         table_.cloth,
+                         table_.cushion_stiffness_ratio};
+    if (on_cloth)
+      impact.velocity.z() = 0.0;
+    auto result = solve(impact, p_.impact);
+    if (!result)
+      return result.error();
+    state.velocity = result.value().velocity;
+    state.angular_velocity = result.value().angular_velocity;
+    if (p_.planar)
+      state.velocity.z() = 0.0;
+    trajectory_.events.push_back({MotionEventType::CushionHit, t, state, rail});
+    return false;
+  }
+
+  Expected<bool> land(BallState& state, double t)
+  {
+    state.position.z() = ball_.radius;
+    auto result = solve(BallTableImpact{ball_.mass, ball_.radius, state.velocity, state.angular_velocity, table_.cloth},
+                        p_.impact);
+    if (!result)
+      return result.error();
+    state.velocity = result.value().velocity;
+    state.angular_velocity = result.value().angular_velocity;
+    if (state.velocity.z() < p_.min_bounce_speed)
+      state.velocity.z() = 0.0;  // the last bounce: from now on the ball stays on the cloth
+    trajectory_.events.push_back({MotionEventType::Landing, t, state});
+    return false;
+  }
+
+  BallTrajectory finish(MotionEventType event, MotionOutcome outcome, double t, const BallState& state)
+  {
+    trajectory_.events.push_back({event, t, state});
+    trajectory_.outcome = outcome;
+    return trajectory_;
+  }
+
+  const Ball& ball_;
+  const Table& table_;
+  const MotionParameters& p_;
+  BallTrajectory trajectory_;
+};
+}  // namespace
+}  // namespace detail
+
+Status validate(const MotionParameters& p)
+{
+  if (Status status = firstError(
+          {requirePositive(p.gravity, "gravity"), requirePositive(p.sliding_friction, "sliding_friction"),
+           requirePositive(p.rolling_friction, "rolling_friction"),
+           requirePositive(p.spinning_friction, "spinning_friction"),
+           requireNonNegative(p.min_bounce_speed, "min_bounce_speed"), requirePositive(p.max_time, "max_time")});
+      !status)
+    return status;
+  if (p.max_events < 2)
+    return invalidArgument("max_events", "must be at least 2");
+  return {};
+}
+
+Expected<BallTrajectory> predictTrajectory(const BallState& start, const Ball& ball, const Table& table,
+                                           const MotionParameters& parameters)
+{
+  if (Status status = firstError({requirePositive(ball.mass, "ball_mass"), requirePositive(ball.radius, "ball_radius"),
+                                  validate(parameters), validate(table)});
+      !status)
+    return status.error();
+  if (!(table.cushion_height > 0.0 && table.cushion_height < 2.0 * ball.radius))
+    return invalidArgument("table.cushion_height", "must be between 0 and the ball's diameter");
+  if (Status status = detail::checkStart(start, ball, table); !status)
+    return status.error();
+  return detail::TrajectoryPredictor(ball, table, parameters).run(start);
+}
+
+}  // namespace billiard_shot_planner

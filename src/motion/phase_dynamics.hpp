@@ -1,0 +1,36 @@
+#pragma once
+
+#include <limits>
+
+#include "billiard_shot_planner/motion/ball_motion.hpp"
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+/// Speeds below this (m/s, or rad/s × m) are zero: the phase has ended.
+constexpr double REST_SPEED = 1e-9;
+constexpr double NEVER = std::numeric_limits<double>::infinity();
+
+/// Which phase a state is in (spec §6.2): off the cloth, slipping, rolling, spinning or at rest.
+MotionPhase classify(const BallState& state, double radius);
+
+/// Contact slip velocity on the cloth, u = v + R ẑ × ω (its xy part).
+Eigen::Vector2d contactSlip(const BallState& state, double radius);
+
+/// The closed-form motion of one phase: constant accelerations, and when the phase ends by itself.
+struct PhaseMotion
+{
+  Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angular_acceleration = Eigen::Vector3d::Zero();
+  double end = NEVER;                                 ///< duration until the phase ends by itself
+  MotionEventType end_event = MotionEventType::Rest;  ///< what happens then
+};
+
+PhaseMotion phaseMotion(MotionPhase phase, const BallState& state, const Ball& ball, const MotionParameters& p);
+
+/// The state at the natural end of a phase, with the quantity that reached zero set exactly to zero.
+BallState snapPhaseEnd(MotionEventType event, BallState state, double radius);
+
+}  // namespace detail
+}  // namespace billiard_shot_planner

@@ -1,0 +1,33 @@
+#include "billiard_shot_planner/motion/table.hpp"
+
+#include "../scenarios/surface_contact_checks.hpp"
+
+namespace billiard_shot_planner
+{
+std::vector<Pocket> sixPockets(double length, double width)
+{
+  const double x = 0.5 * length, y = 0.5 * width;
+  return {{{-x, -y}, 0.06}, {{x, -y}, 0.06}, {{-x, y}, 0.06}, {{x, y}, 0.06}, {{0.0, -y}, 0.065}, {{0.0, y}, 0.065}};
+}
+
+Status validate(const Table& table, const std::string& field)
+{
+  if (Status status =
+          firstError({requirePositive(table.length, field + ".length"), requirePositive(table.width, field + ".width"),
+                      requirePositive(table.cushion_height, field + ".cushion_height"),
+                      validate(table.cloth, field + ".cloth"), validate(table.cushion, field + ".cushion"),
+                      requirePositive(table.cushion_stiffness_ratio, field + ".cushion_stiffness_ratio")});
+      !status)
+    return status;
+  for (std::size_t i = 0; i < table.pockets.size(); ++i)
+  {
+    const std::string name = field + ".pockets[" + std::to_string(i) + "]";
+    if (Status status = firstError({requireFinite(table.pockets[i].centre, name + ".centre"),
+                                    requirePositive(table.pockets[i].radius, name + ".radius")});
+        !status)
+      return status;
+  }
+  return {};
+}
+
+}  // namespace billiard_shot_planner

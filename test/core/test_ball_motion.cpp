@@ -1,0 +1,311 @@
+// Ball motion after the shot (spec §6): closed-form phases against independent formulas and the spec's §7.5
+// numbers, physical invariants, landings, cushions and pockets.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "billiard_shot_planner/motion/ball_motion.hpp"
+#include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
+
+namespace bsp = billiard_shot_planner;
+using Type = bsp::MotionEventType;
+
+namespace
+{
+const double G = 9.81, MU_S = 0.152479, MU_R = 0.0209727;
+
+bsp::Table openTable()
+{
+  bsp::Table table;
+  table.length = table.width = 20.0;
+  table.pockets.clear();
+  return table;
+}
+
+bsp::BallState stateOf(Eigen::Vector3d v, Eigen::Vector3d w, Eigen::Vector2d xy = Eigen::Vector2d::Zero())
+{
+  bsp::BallState s;
+  s.position << xy, 0.0286;
+  s.velocity = v;
+  s.angular_velocity = w;
+  return s;
+}
+
+bsp::BallTrajectory predicted(const bsp::BallState& start, const bsp::Table& table, bsp::MotionParameters p = {},
+                              double radius = 0.0286)
+{
+  auto result = bsp::predictTrajectory(start, bsp::Ball{0.17, radius}, table, p);
+  EXPECT_TRUE(result.ok()) << (result.ok() ? "" : result.error().describe());
+  return result.value();
+}
+
+const bsp::MotionEvent* firstEvent(const bsp::BallTrajectory& t, Type type)
+{
+  for (const auto& e : t.events)
+    if (e.type == type)
+      return &e;
+  return nullptr;
+}
+
+double energy(const bsp::BallState& s, double m = 0.17, double r = 0.0286)
+{
+  return 0.5 * m * s.velocity.squaredNorm() + 0.2 * m * r * r * s.angular_velocity.squaredNorm() +
+         m * G * (s.position.z() - r);
+}
+}  // namespace
+
+TEST(BallMotion, ClosedFormsOfSpecSection75)
+{
+  struct Case
+  {
+    Eigen::Vector3d v, w;
+    double radius;
+    double t_s;
+    Eigen::Vector2d x_s, v_roll;
+    double t_roll;
+    Eigen::Vector2d rest;
+  };
+  const Case cases[] = {
+      {{-1.67629, -0.075349, 0.637937},
+       {40.3064, 83.6145, -15.4927},
+       0.0286,
+       0.80375,
+       {-0.88026, -0.18427},
+       {-0.51410, -0.38318},
+       4.36308,
+       {-2.00179, -1.02020}},
+      {{-1.67063, -0.274431, 0},
+       {28.4584, 79.1561, 0},
+       0.0286,
+       0.75855,
+       {-0.84090, -0.26663},
+       {-0.54649, -0.42857},
+       4.72577,
+       {-2.13219, -1.27929}},
+      {{-1.67629, -0.075349, 0.637937},
+       {40.3064, 83.6145, -15.4927},
+       0.0305,
+       0.83685,
+       {-0.89753, -0.20102},
+       {-0.46871, -0.40506},
+       4.21538,
+       {-1.88542, -1.05476}},
+  };
+  bsp::MotionParameters p;
+  p.planar = true;
+  for (const Case& c : cases)
+  {
+    const auto t = predicted(stateOf(c.v, c.w), openTable(), p, c.radius);
+    // Independent closed forms of spec §6.2.
+    const Eigen::Vector2d v0 = c.v.head<2>();
+    const Eigen::Vector2d u0(c.v.x() - c.radius * c.w.y(), c.v.y() + c.radius * c.w.x());
+    const double t_s = 2.0 * u0.norm() / (7.0 * MU_S * G);
+    const Eigen::Vector2d x_s = v0 * t_s - 0.5 * MU_S * G * t_s * t_s * u0.normalized();
+    const Eigen::Vector2d v_roll = v0 - 2.0 / 7.0 * u0;
+    const double a_r = 5.0 / 7.0 * MU_R * G;
+    const double t_roll = v_roll.norm() / a_r;
+    const Eigen::Vector2d rest = x_s + v_roll.squaredNorm() / (2.0 * a_r) * v_roll.normalized();
+
+    const auto* slide_end = firstEvent(t, Type::SlideToRoll);
+    const auto* roll_end = firstEvent(t, Type::RollToSpin);
+    ASSERT_TRUE(slide_end && roll_end);
+    EXPECT_NEAR(slide_end->time, t_s, 1e-9);
+    EXPECT_LT((slide_end->state.position.head<2>() - x_s).norm(), 1e-9);
+    EXPECT_LT((slide_end->state.velocity.head<2>() - v_roll).norm(), 1e-9);
+    EXPECT_NEAR(roll_end->time - slide_end->time, t_roll, 1e-9);
+    EXPECT_LT((t.finalState().position.head<2>() - rest).norm(), 1e-9);
+    EXPECT_EQ(t.outcome, bsp::MotionOutcome::Rest);
+    // The spec's printed values (5 digits).
+    EXPECT_NEAR(t_s, c.t_s, 1e-5);
+    EXPECT_LT((x_s - c.x_s).norm(), 2e-5);
+    EXPECT_LT((v_roll - c.v_roll).norm(), 2e-5);
+    EXPECT_NEAR(t_roll, c.t_roll, 1e-5);
+    EXPECT_LT((rest - c.rest).norm(), 2e-5);
+  }
+}
+
+TEST(BallMotion, StunShotAcquiresTopspinAndRollingKeepsTheRollingCondition)
+{
+  const auto t = predicted(stateOf({1.0, 0.5, 0}, {0, 0, 0}), openTable());
+  const auto* roll = firstEvent(t, Type::SlideToRoll);
+  ASSERT_TRUE(roll);
+  // Topspin for motion along v: ω = ẑ × v / R, i.e. ω_y = v_x/R > 0 and ω_x = −v_y/R.
+  EXPECT_GT(roll->state.angular_velocity.y(), 0.0);
+  EXPECT_NEAR(roll->state.angular_velocity.y(), roll->state.velocity.x() / 0.0286, 1e-9);
+  for (const auto& s : t.sample(0.05))
+  {
+    if (s.phase != bsp::MotionPhase::Rolling)
+      continue;
+    const Eigen::Vector3d expected = Eigen::Vector3d::UnitZ().cross(s.state.velocity) / 0.0286;
+    EXPECT_LT((s.state.angular_velocity.head<2>() - expected.head<2>()).norm(), 1e-9);
+  }
+  // Stun: the velocity direction does not change (the slip is along v).
+  EXPECT_NEAR(roll->state.velocity.y() / roll->state.velocity.x(), 0.5, 1e-12);
+}
+
+TEST(BallMotion, RollingModels)
+{
+  bsp::MotionParameters paper, pooltool;
+  pooltool.rolling_model = bsp::RollingModel::Pooltool;
+  pooltool.rolling_friction = paper.rolling_friction * 5.0 / 7.0;  // μ_r(paper) = (7/5) μ_r(pooltool)
+  const auto start = stateOf({1.0, 0, 0}, {0, 1.0 / 0.0286, 0});   // rolling from the start
+  const auto a = predicted(start, openTable(), paper), b = predicted(start, openTable(), pooltool);
+  EXPECT_NEAR(a.finalState().position.x(), b.finalState().position.x(), 1e-9);
+  EXPECT_NEAR(a.finalState().position.x(), 1.0 / (2.0 * 5.0 / 7.0 * MU_R * G), 1e-9);
+}
+
+TEST(BallMotion, EnergyNeverIncreasesAlongAHoppingShotWithCushions)
+{
+  bsp::Table table;
+  const auto t = predicted(stateOf({-2.0733, 0.2413, 0.4673}, {11.637, 25.280, -6.150}, {0.3, 0.2}), table);
+  double previous = energy(t.events.front().state);
+  for (const auto& s : t.sample(0.002))
+  {
+    const double e = energy(s.state);
+    EXPECT_LE(e, previous + 1e-9) << "t = " << s.time;
+    previous = std::min(previous, e);
+  }
+  EXPECT_TRUE(firstEvent(t, Type::Landing));
+  EXPECT_TRUE(firstEvent(t, Type::CushionHit));
+}
+
+TEST(Landing, FrictionlessBounceIsExactlyRestitution)
+{
+  bsp::BallTableImpact impact;
+  impact.mass = 0.17;
+  impact.radius = 0.0286;
+  impact.velocity = {0.8, -0.3, -1.2};
+  impact.angular_velocity = {5, -7, 3};
+  impact.table = {0.51625, 0.0, 10.0};
+  const auto r = bsp::solve(impact).value();
+  EXPECT_NEAR(r.velocity.z(), 0.51625 * 1.2, 1e-12);
+  EXPECT_NEAR((r.velocity.head<2>() - impact.velocity.head<2>()).norm(), 0.0, 1e-12);
+  // In a trajectory: each landing multiplies v_z by −e.
+  bsp::Table table = openTable();
+  table.cloth.friction = 0.0;
+  const auto t = predicted(stateOf({0.5, 0, 1.0}, {0, 0, 0}), table);
+  double v_z = 1.0;
+  int landings = 0;
+  for (const auto& e : t.events)
+  {
+    if (e.type != Type::Landing)
+      continue;
+    v_z *= 0.51625;
+    ++landings;
+    if (v_z >= bsp::MotionParameters{}.min_bounce_speed)
+      EXPECT_NEAR(e.state.velocity.z(), v_z, 1e-12);
+    else
+      EXPECT_EQ(e.state.velocity.z(), 0.0);
+  }
+  EXPECT_EQ(landings, 6);  // 1 · 0.51625^k drops below 0.02 m/s at k = 6
+}
+
+TEST(Landing, NumberOfBouncesIsFinite)
+{
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < 50; ++k)
+  {
+    bsp::Table table = openTable();
+    table.cloth = {0.3 + 0.69 * unit(rng), 0.5 * unit(rng), 1 + 9 * unit(rng)};
+    bsp::MotionParameters p;
+    p.min_bounce_speed = 1e-3 * unit(rng);
+    const auto t = predicted(stateOf({unit(rng), unit(rng), 3 * unit(rng)}, {20 * unit(rng), 0, 0}), table, p);
+    EXPECT_EQ(t.outcome, bsp::MotionOutcome::Rest) << k;
+  }
+}
+
+TEST(Cushion, StraightInRebondsStraightBackSlower)
+{
+  bsp::Table table;
+  table.pockets.clear();
+  const auto t = predicted(stateOf({2.0, 0, 0}, {0, 2.0 / 0.0286, 0}), table);  // rolling along +x
+  const auto* hit = firstEvent(t, Type::CushionHit);
+  ASSERT_TRUE(hit);
+  EXPECT_EQ(hit->cushion, 1);
+  EXPECT_LT(hit->state.velocity.x(), 0.0);
+  const double before = t.at(hit->time - 1e-9).velocity.x();
+  EXPECT_LT(-hit->state.velocity.x(), before);
+  EXPECT_NEAR(hit->state.velocity.y(), 0.0, 1e-12);
+  EXPECT_NEAR(t.finalState().position.y(), 0.0, 1e-12);
+  EXPECT_LE(energy(hit->state), energy(t.at(hit->time - 1e-9)) + 1e-12);
+}
+
+TEST(Cushion, MirroredIncidenceGivesMirroredOutcomes)
+{
+  bsp::Table table;
+  table.pockets.clear();
+  for (double angle : {0.2, 0.6, 1.0})
+  {
+    const Eigen::Vector3d v(2 * std::cos(angle), 2 * std::sin(angle), 0);
+    const Eigen::Vector3d mirrored(v.x(), -v.y(), 0);
+    const auto a = predicted(stateOf(v, Eigen::Vector3d::UnitZ().cross(v) / 0.0286), table);
+    const auto b = predicted(stateOf(mirrored, Eigen::Vector3d::UnitZ().cross(mirrored) / 0.0286), table);
+    EXPECT_NEAR(a.finalState().position.x(), b.finalState().position.x(), 1e-9);
+    EXPECT_NEAR(a.finalState().position.y(), -b.finalState().position.y(), 1e-9);
+    EXPECT_EQ(a.events.size(), b.events.size());
+  }
+}
+
+TEST(Cushion, SweepNeverPenetratesOrHangs)
+{
+  bsp::Table table;
+  table.pockets.clear();
+  const double reach = std::sqrt(0.0286 * 0.0286 - std::pow(table.cushion_height - 0.0286, 2));
+  int hits = 0;
+  for (int k = 0; k < 50; ++k)
+    for (double speed : {0.5, 2.0, 6.0})
+    {
+      const double angle = 2 * M_PI * k / 50.0;
+      const Eigen::Vector3d v(speed * std::cos(angle), speed * std::sin(angle), 0);
+      const auto t = predicted(stateOf(v, Eigen::Vector3d::UnitZ().cross(v) / 0.0286, {0.2, -0.1}), table);
+      EXPECT_NE(t.outcome, bsp::MotionOutcome::TimeLimit);
+      for (const auto& s : t.sample(0.001))
+      {
+        EXPECT_LE(std::abs(s.state.position.x()), 0.5 * table.length - reach + 1e-9);
+        EXPECT_LE(std::abs(s.state.position.y()), 0.5 * table.width - reach + 1e-9);
+      }
+      for (const auto& e : t.events)
+        hits += e.type == Type::CushionHit;
+    }
+  EXPECT_GT(hits, 150);
+}
+
+TEST(Pocket, StraightAtACornerIsPocketedBesideItIsNot)
+{
+  bsp::Table table;
+  const Eigen::Vector2d corner(0.5 * table.length, 0.5 * table.width);
+  const Eigen::Vector2d start(0.0, 0.0);
+  const Eigen::Vector2d aim = (corner - start).normalized();
+  const Eigen::Vector3d v(3 * aim.x(), 3 * aim.y(), 0);
+  const auto in = predicted(stateOf(v, Eigen::Vector3d::UnitZ().cross(v) / 0.0286, start), table);
+  EXPECT_EQ(in.outcome, bsp::MotionOutcome::Pocketed);
+  EXPECT_EQ(in.events.back().pocket, 3);
+  // Aimed at a point on the long cushion 0.25 m before the corner.
+  const Eigen::Vector2d beside = (Eigen::Vector2d(corner.x() - 0.25, corner.y()) - start).normalized();
+  const Eigen::Vector3d w(1.0 * beside.x(), 1.0 * beside.y(), 0);
+  const auto out = predicted(stateOf(w, Eigen::Vector3d::UnitZ().cross(w) / 0.0286, start), table);
+  EXPECT_NE(out.events[1].type, Type::Pocketed);
+  EXPECT_TRUE(firstEvent(out, Type::CushionHit));
+}
+
+TEST(BallMotionBadInput, NamedErrors)
+{
+  bsp::Table table;
+  const bsp::Ball ball;
+  auto error = [&](const bsp::BallState& s, const bsp::MotionParameters& p = {})
+  { return bsp::predictTrajectory(s, ball, table, p).error(); };
+  EXPECT_EQ(error(stateOf({1, 0, 0}, {0, 0, 0}, {2.0, 0.0})).field, "position");   // off the table
+  EXPECT_EQ(error(stateOf({1, 0, 0}, {0, 0, 0}, {1.26, 0.0})).field, "position");  // overlaps a cushion
+  EXPECT_EQ(error(stateOf({1, 0, 0}, {0, 0, 0}, {1.25, 0.6})).field, "position");  // in a pocket region
+  EXPECT_EQ(error(stateOf({NAN, 0, 0}, {0, 0, 0})).field, "v");
+  bsp::MotionParameters p;
+  p.sliding_friction = -0.1;
+  EXPECT_EQ(error(stateOf({1, 0, 0}, {0, 0, 0}), p).field, "sliding_friction");
+  p = {};
+  p.rolling_friction = 0.0;
+  EXPECT_EQ(error(stateOf({1, 0, 0}, {0, 0, 0}), p).field, "rolling_friction");
+  table.cushion.friction = -1;
+  EXPECT_EQ(error(stateOf({1, 0, 0}, {0, 0, 0})).field, "table.cushion.friction");
+}
