@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
 #include "billiard_shot_planner/scenarios/ball_chain.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
@@ -93,7 +94,28 @@ void BM_MasseStrike(benchmark::State& state)
 {
   solveRepeatedly(state, masse());
 }
+/// A sliding ball on a 9-ft table without pockets that hits three cushions (hopping after each) before it stops.
+void BM_TrajectoryThreeCushions(benchmark::State& state)
+{
+  bsp::Table table;
+  table.pockets.clear();
+  bsp::BallState start;
+  start.position = {-0.5, -0.2, 0.0286};
+  start.velocity = {3.5, 1.2, 0.0};
+  int hits = 0;
+  for (auto _ : state)
+  {
+    const auto trajectory = bsp::predictTrajectory(start, bsp::Ball{}, table);
+    hits = 0;
+    for (const auto& event : trajectory.value().events)
+      hits += event.type == bsp::MotionEventType::CushionHit;
+    benchmark::DoNotOptimize(trajectory);
+  }
+  state.counters["cushion_hits"] = hits;
+}
 }  // namespace
+
+BENCHMARK(BM_TrajectoryThreeCushions)->Unit(benchmark::kMicrosecond);
 
 // Argument: −log10 of the relative tolerance (12 is the default). velocity_error: against 100× tighter.
 BENCHMARK(BM_Table1)->Arg(8)->Arg(10)->Arg(12)->Unit(benchmark::kMicrosecond);

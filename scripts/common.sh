@@ -12,7 +12,7 @@ BUILD_DIR="${BUILD_DIR:-${REPO_ROOT}/build}"
 PACKAGES=(
   build-essential cmake
   catkin ros-core-dev python3-catkin-pkg
-  libeigen3-dev libboost-dev nlohmann-json3-dev
+  libeigen3-dev libboost-dev nlohmann-json3-dev libyaml-cpp-dev
   libgtest-dev libbenchmark-dev
   clang-format catkin-lint
 )

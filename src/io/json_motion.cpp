@@ -1,5 +1,6 @@
 #include <string>
 
+#include "billiard_shot_planner/io/table_yaml.hpp"
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "json_fields.hpp"
@@ -74,8 +75,19 @@ Status readSurface(const json& table, const char* key, SurfaceContact& surface)
 Expected<Table> tableField(const json& request, const SurfaceContact* cloth)
 {
   Table table;
-  if (cloth)
+  if (request.contains("table_file"))
+  {
+    if (!request.at("table_file").is_string())
+      return invalidArgument("table_file", "must be a path");
+    auto loaded = loadTableYaml(request.at("table_file").get<std::string>());
+    if (!loaded)
+      return loaded.error();
+    table = loaded.value();
+  }
+  else if (cloth)
+  {
     table.cloth = *cloth;
+  }
   auto fields = object(request, "table", false);
   if (!fields)
     return fields.error();
@@ -88,7 +100,8 @@ Expected<Table> tableField(const json& request, const SurfaceContact* cloth)
                                   "table");
       !status)
     return status.error();
-  table.pockets = sixPockets(table.length, table.width);
+  if (t.contains("length") || t.contains("width"))
+    table.pockets = sixPockets(table.length, table.width);
   if (t.contains("pockets"))
   {
     auto list = pockets(t);

@@ -172,3 +172,54 @@ TEST(ImpactSolve, InvalidShotsExitWithTwo)
     EXPECT_NE(run.output.find(c[1]), std::string::npos) << c[0] << "\n" << run.output;
   }
 }
+
+TEST(ImpactSolve, BallMotionAndShot)
+{
+  const SolverRun motion = runSolver(
+      R"({"problem": "ball_motion", "position": [0, 0], "v": [-1.67629, -0.075349, 0.637937],
+          "omega": [40.3064, 83.6145, -15.4927], "ball_radius": 0.0286, "planar": true,
+          "table": {"length": 10, "width": 10, "pockets": []}})");
+  ASSERT_EQ(motion.exit_code, 0) << motion.output;
+  const auto m = nlohmann::json::parse(motion.output);
+  EXPECT_EQ(m["outcome"], "rest");
+  EXPECT_NEAR(m["rest_position"][0].get<double>(), -2.00179, 1e-5);  // spec §7.5
+  EXPECT_NEAR(m["rest_position"][1].get<double>(), -1.02020, 1e-5);
+  EXPECT_EQ(m["events"][1]["type"], "slide_to_roll");
+  EXPECT_GT(m["samples"].size(), 100u);
+
+  const SolverRun shot = runSolver(
+      R"({"problem": "shot", "ball_position": [0.3, 0.2], "cue_mass": 0.5018,
+          "cue_direction": [-0.2761, -0.1388, -0.9511], "cue_speed": 3.089095, "ball_mass": 0.17,
+          "ball_radius": 0.0286, "hit_normal": [0.480151, -0.102889, 0.871131],
+          "cue_contact": {"restitution": 0.656532, "friction": 0.7, "eta2": 7},
+          "table_contact": {"restitution": 0.51625, "friction": 0.152479, "eta2": 10}, "stiffness_ratio": 0.8,
+          "table_file": ")" +
+      std::string(CONFIG_DIR) + R"(/table_9ft.yaml"})");
+  ASSERT_EQ(shot.exit_code, 0) << shot.output;
+  const auto s = nlohmann::json::parse(shot.output);
+  EXPECT_EQ(s["strike"]["states"], (std::vector<std::string>{"S1", "S2", "S4"}));
+  EXPECT_EQ(s["trajectory"]["events"][1]["type"], "landing");
+}
+
+TEST(ImpactSolve, BallMotionBadInput)
+{
+  const char* cases[][2] = {
+      {R"({"problem": "ball_motion", "position": [5, 0], "v": [1, 0, 0], "omega": [0, 0, 0]})", "off the table"},
+      {R"({"problem": "ball_motion", "position": [0, 0], "v": [1, 0, 0], "omega": [0, 0, 0],
+           "sliding_friction": -1})",
+       "sliding_friction"},
+      {R"({"problem": "ball_motion", "position": [0, 0], "v": [1, 0, 0], "omega": [0, 0, 0],
+           "rolling_model": "magic"})",
+       "rolling_model"},
+      {R"({"problem": "ball_motion", "position": [0, 0], "v": [1, 0], "omega": [0, 0, 0]})", "v"},
+      {R"({"problem": "ball_motion", "position": [0, 0], "v": [1, 0, 0], "omega": [0, 0, 0],
+           "table_file": "/nonexistent.yaml"})",
+       "cannot open"},
+  };
+  for (const auto& c : cases)
+  {
+    const SolverRun run = runSolver(c[0]);
+    EXPECT_EQ(run.exit_code, 2) << c[0] << "\n" << run.output;
+    EXPECT_NE(run.output.find(c[1]), std::string::npos) << c[0] << "\n" << run.output;
+  }
+}

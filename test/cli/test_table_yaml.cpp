@@ -1,0 +1,45 @@
+// The table YAML format: the shipped 9-ft table is the code's default, and bad files give named errors.
+#include <gtest/gtest.h>
+
+#include "billiard_shot_planner/io/table_yaml.hpp"
+
+namespace bsp = billiard_shot_planner;
+
+TEST(TableYaml, ShippedNineFootTableEqualsTheDefaults)
+{
+  const auto loaded = bsp::loadTableYaml(std::string(CONFIG_DIR) + "/table_9ft.yaml");
+  ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
+  const bsp::Table& t = loaded.value();
+  const bsp::Table d;
+  EXPECT_EQ(t.length, d.length);
+  EXPECT_EQ(t.width, d.width);
+  EXPECT_EQ(t.cushion_height, d.cushion_height);
+  EXPECT_EQ(t.cushion_stiffness_ratio, d.cushion_stiffness_ratio);
+  EXPECT_EQ(t.cloth.restitution, d.cloth.restitution);
+  EXPECT_EQ(t.cloth.friction, d.cloth.friction);
+  EXPECT_EQ(t.cloth.eta2, d.cloth.eta2);
+  EXPECT_EQ(t.cushion.restitution, d.cushion.restitution);
+  EXPECT_EQ(t.cushion.friction, d.cushion.friction);
+  EXPECT_EQ(t.cushion.eta2, d.cushion.eta2);
+  ASSERT_EQ(t.pockets.size(), d.pockets.size());
+  for (std::size_t i = 0; i < t.pockets.size(); ++i)
+  {
+    EXPECT_EQ(t.pockets[i].centre, d.pockets[i].centre) << i;
+    EXPECT_EQ(t.pockets[i].radius, d.pockets[i].radius) << i;
+  }
+}
+
+TEST(TableYaml, PartialFilesKeepDefaultsAndBadOnesNameTheField)
+{
+  const auto small = bsp::parseTableYaml("table: {length: 2.24, width: 1.12}");
+  ASSERT_TRUE(small.ok());
+  EXPECT_EQ(small.value().pockets.size(), 6u);
+  EXPECT_DOUBLE_EQ(small.value().pockets[3].centre.x(), 1.12);
+  EXPECT_EQ(bsp::parseTableYaml("table: {length: -1}").error().field, "table.length");
+  EXPECT_EQ(bsp::parseTableYaml("table: {cushion: {friction: abc}}").error().field, "table.cushion.friction");
+  EXPECT_EQ(bsp::parseTableYaml("table: {pockets: [{centre: [0, 0, 1], radius: 0.1}]}").error().field,
+            "table.pockets[0].centre");
+  EXPECT_EQ(bsp::parseTableYaml("length: 3").error().field, "table");
+  EXPECT_EQ(bsp::parseTableYaml("table: [unclosed").error().field, "table");
+  EXPECT_EQ(bsp::loadTableYaml("/nonexistent.yaml").error().field, "table_file");
+}
