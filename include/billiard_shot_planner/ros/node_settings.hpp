@@ -1,0 +1,25 @@
+#pragma once
+
+#include <ros/node_handle.h>
+
+#include <string>
+
+#include "billiard_shot_planner/core/expected.hpp"
+#include "billiard_shot_planner/shot/shot_prediction.hpp"
+
+namespace billiard_shot_planner
+{
+/// The node's parameters (private namespace; README "Parameters" lists them with units, defaults and ranges).
+struct NodeSettings
+{
+  std::string target_frame = "table";  ///< the table frame the answers are in
+  double tf_timeout = 0.2;             ///< s, wait for a transform
+  double sample_spacing = 0.01;        ///< s, between trajectory samples in messages and markers
+  int threads = 2;                     ///< service threads
+  ShotConfiguration shot;
+};
+
+/// Reads every parameter (absent ones keep their defaults) and validates them. The error names the parameter.
+Expected<NodeSettings> readSettings(const ros::NodeHandle& private_handle);
+
+}  // namespace billiard_shot_planner

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <billiard_shot_planner/PredictShot.h>
+#include <ros/ros.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include "billiard_shot_planner/ros/node_settings.hpp"
+
+namespace billiard_shot_planner
+{
+/// The ROS face of the core library: ~predict_shot in, ~prediction and ~trajectory_markers out. A thin adapter:
+/// messages and tf2 in, predictShot(), messages and markers out. The core is pure and thread-safe, so the service
+/// may be served by several threads at once.
+class ShotPredictorNode
+{
+public:
+  /// Throws std::runtime_error naming the parameter when a parameter is invalid (the node then exits).
+  ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& private_node);
+
+  int threads() const { return settings_.threads; }
+
+private:
+  bool predict(PredictShot::Request& request, PredictShot::Response& response);
+  Expected<CuePlacement> placeCue(const PredictShot::Request& request) const;
+  Expected<ShotConfiguration> configurationFor(const PredictShot::Request& request) const;
+
+  NodeSettings settings_;
+  tf2_ros::Buffer buffer_;
+  tf2_ros::TransformListener listener_{buffer_};
+  ros::Publisher prediction_publisher_;
+  ros::Publisher marker_publisher_;
+  ros::ServiceServer service_;
+};
+
+}  // namespace billiard_shot_planner

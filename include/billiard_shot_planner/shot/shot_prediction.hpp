@@ -1,0 +1,66 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "billiard_shot_planner/core/expected.hpp"
+#include "billiard_shot_planner/motion/ball_motion.hpp"
+#include "billiard_shot_planner/scenarios/cue_strike.hpp"
+
+namespace billiard_shot_planner
+{
+/// Everything physical about a shot except where the cue is and how fast it moves: the cue, the ball, the table
+/// and the motion model. Defaults: the paper's massé set-up (§9.2) with the errata's ball (0.17 kg, 0.0286 m).
+struct ShotConfiguration
+{
+  double cue_mass = 0.5018;                        ///< kg, cue (and whatever moves with it)
+  double ball_mass = 0.17;                         ///< kg
+  double ball_radius = 0.0286;                     ///< m
+  SurfaceContact cue_contact{0.656532, 0.7, 7.0};  ///< cue tip on ball: e, μ, η²
+  double stiffness_ratio = 0.8;                    ///< k_cloth / k_cue
+  Table table;                                     ///< includes the cloth contact (e, μ, η²) of the strike
+  MotionParameters motion;
+  SolverOptions solver;
+};
+
+/// Checks every field; the error names it with the parameter names of the ROS node ("cue_contact/friction").
+Status validate(const ShotConfiguration& configuration);
+
+/// A numeric parameter of ShotConfiguration by its name (the ROS node's parameter and override names).
+struct NamedParameter
+{
+  const char* name;
+  double* value;
+};
+
+/// Every numeric parameter of the configuration, by name: cue_mass, ball_mass, ball_radius,
+/// cue_contact/{restitution,friction,eta2}, stiffness_ratio, table/{length,width,cushion_height,
+/// cushion_stiffness_ratio}, table/cloth/…, table/cushion/…, motion/{gravity,sliding_friction,rolling_friction,
+/// spinning_friction,min_bounce_speed,max_time}, solver/{relative_tolerance,absolute_tolerance}.
+std::vector<NamedParameter> numericParameters(ShotConfiguration& configuration);
+
+/// Sets one numeric parameter by name. Errors: unknown name, or a value the configuration rejects.
+Status applyOverride(ShotConfiguration& configuration, const std::string& name, double value);
+
+/// Where the cue is at the moment of contact and how fast it moves, and where the ball rests (table frame).
+struct CuePlacement
+{
+  Eigen::Vector3d tip = Eigen::Vector3d::Zero();         ///< centre of the cue tip, on the cue axis
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  ///< the cue's direction of motion (normalised)
+  double speed = 1.0;                                    ///< m/s
+  Eigen::Vector2d ball = Eigen::Vector2d::Zero();        ///< the ball's centre in the table plane
+};
+
+struct ShotOutcome
+{
+  CueStrikeResult strike;
+  BallTrajectory trajectory;
+  Eigen::Vector3d hit_point;  ///< table frame
+};
+
+/// The whole prediction: the hit point where the cue axis meets the ball, the strike by the multiple-impact
+/// engine, and the path on the table. Pure function, thread-safe.
+Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfiguration& configuration);
+
+}  // namespace billiard_shot_planner

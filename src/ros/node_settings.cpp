@@ -1,0 +1,85 @@
+#include "billiard_shot_planner/ros/node_settings.hpp"
+
+#include <cmath>
+
+#include "billiard_shot_planner/core/validation.hpp"
+
+namespace billiard_shot_planner
+{
+namespace
+{
+Status readPockets(const ros::NodeHandle& pnh, Table& table)
+{
+  table.pockets = sixPockets(table.length, table.width);
+  XmlRpc::XmlRpcValue list;
+  if (!pnh.getParam("table/pockets", list))
+    return {};
+  if (list.getType() != XmlRpc::XmlRpcValue::TypeArray)
+    return invalidArgument("table/pockets", "must be a list of [x, y, radius]");
+  table.pockets.clear();
+  for (int i = 0; i < list.size(); ++i)
+  {
+    const std::string name = "table/pockets[" + std::to_string(i) + "]";
+    if (list[i].getType() != XmlRpc::XmlRpcValue::TypeArray || list[i].size() != 3)
+      return invalidArgument(name, "must be [x, y, radius]");
+    double values[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      XmlRpc::XmlRpcValue& v = list[i][k];
+      if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble)
+        values[k] = static_cast<double>(v);
+      else if (v.getType() == XmlRpc::XmlRpcValue::TypeInt)
+        values[k] = static_cast<int>(v);
+      else
+        return invalidArgument(name, "must be [x, y, radius] numbers");
+    }
+    table.pockets.push_back({{values[0], values[1]}, values[2]});
+  }
+  return {};
+}
+
+Status readMotionChoices(const ros::NodeHandle& pnh, MotionParameters& motion)
+{
+  std::string model = motion.rolling_model == RollingModel::Paper ? "paper" : "pooltool";
+  pnh.param("motion/rolling_model", model, model);
+  if (model != "paper" && model != "pooltool")
+    return invalidArgument("motion/rolling_model", "must be \"paper\" or \"pooltool\", got \"" + model + "\"");
+  motion.rolling_model = model == "paper" ? RollingModel::Paper : RollingModel::Pooltool;
+  pnh.param("motion/planar", motion.planar, motion.planar);
+  return {};
+}
+
+Status checkNodeSettings(const NodeSettings& s)
+{
+  if (s.target_frame.empty() || s.target_frame.front() == '/')
+    return invalidArgument("target_frame", "must be a non-empty frame id without a leading '/'");
+  if (!(std::isfinite(s.tf_timeout) && s.tf_timeout >= 0.0 && s.tf_timeout <= 10.0))
+    return invalidArgument("tf_timeout", "must be in [0, 10] s");
+  if (!(s.sample_spacing >= 1e-3 && s.sample_spacing <= 1.0))
+    return invalidArgument("sample_spacing", "must be in [0.001, 1] s");
+  if (s.threads < 1 || s.threads > 64)
+    return invalidArgument("threads", "must be in [1, 64]");
+  return {};
+}
+}  // namespace
+
+Expected<NodeSettings> readSettings(const ros::NodeHandle& pnh)
+{
+  NodeSettings s;
+  pnh.param("target_frame", s.target_frame, s.target_frame);
+  pnh.param("tf_timeout", s.tf_timeout, s.tf_timeout);
+  pnh.param("sample_spacing", s.sample_spacing, s.sample_spacing);
+  pnh.param("threads", s.threads, s.threads);
+  for (const NamedParameter& parameter : numericParameters(s.shot))
+    pnh.param(parameter.name, *parameter.value, *parameter.value);
+  // In order: what cannot be read, then the node's own settings, then the physics.
+  if (Status status = readPockets(pnh, s.shot.table); !status)
+    return status.error();
+  if (Status status = readMotionChoices(pnh, s.shot.motion); !status)
+    return status.error();
+  if (Status status = firstError({checkNodeSettings(s), validate(s.shot)}); !status)
+    return status.error();
+  return s;
+}
+
+}  // namespace billiard_shot_planner

@@ -1,0 +1,109 @@
+#include "billiard_shot_planner/shot/shot_prediction.hpp"
+
+#include <algorithm>
+
+#include "../scenarios/surface_contact_checks.hpp"
+
+namespace billiard_shot_planner
+{
+namespace
+{
+/// Validation errors of the parts use dots ("table.cloth.friction"); parameters use slashes.
+Error withParameterName(Error error)
+{
+  std::replace(error.field.begin(), error.field.end(), '.', '/');
+  return error;
+}
+}  // namespace
+
+Status validate(const ShotConfiguration& c)
+{
+  Status status = firstError({requirePositive(c.cue_mass, "cue_mass"), requirePositive(c.ball_mass, "ball_mass"),
+                              requirePositive(c.ball_radius, "ball_radius"), validate(c.cue_contact, "cue_contact"),
+                              requirePositive(c.stiffness_ratio, "stiffness_ratio"), validate(c.table, "table"),
+                              validate(c.motion)});
+  if (!status)
+    return withParameterName(status.error());
+  if (!(c.table.cushion_height > 0.0 && c.table.cushion_height < 2.0 * c.ball_radius))
+    return invalidArgument("table/cushion_height", "must be between 0 and the ball's diameter");
+  if (!(c.solver.relative_tolerance > 0.0 && c.solver.relative_tolerance < 1e-2))
+    return invalidArgument("solver/relative_tolerance", "must be in (0, 0.01)");
+  if (!(c.solver.absolute_tolerance > 0.0 && c.solver.absolute_tolerance < 1e-2))
+    return invalidArgument("solver/absolute_tolerance", "must be in (0, 0.01)");
+  return {};
+}
+
+std::vector<NamedParameter> numericParameters(ShotConfiguration& c)
+{
+  return {{"cue_mass", &c.cue_mass},
+          {"ball_mass", &c.ball_mass},
+          {"ball_radius", &c.ball_radius},
+          {"cue_contact/restitution", &c.cue_contact.restitution},
+          {"cue_contact/friction", &c.cue_contact.friction},
+          {"cue_contact/eta2", &c.cue_contact.eta2},
+          {"stiffness_ratio", &c.stiffness_ratio},
+          {"table/length", &c.table.length},
+          {"table/width", &c.table.width},
+          {"table/cushion_height", &c.table.cushion_height},
+          {"table/cushion_stiffness_ratio", &c.table.cushion_stiffness_ratio},
+          {"table/cloth/restitution", &c.table.cloth.restitution},
+          {"table/cloth/friction", &c.table.cloth.friction},
+          {"table/cloth/eta2", &c.table.cloth.eta2},
+          {"table/cushion/restitution", &c.table.cushion.restitution},
+          {"table/cushion/friction", &c.table.cushion.friction},
+          {"table/cushion/eta2", &c.table.cushion.eta2},
+          {"motion/gravity", &c.motion.gravity},
+          {"motion/sliding_friction", &c.motion.sliding_friction},
+          {"motion/rolling_friction", &c.motion.rolling_friction},
+          {"motion/spinning_friction", &c.motion.spinning_friction},
+          {"motion/min_bounce_speed", &c.motion.min_bounce_speed},
+          {"motion/max_time", &c.motion.max_time},
+          {"solver/relative_tolerance", &c.solver.relative_tolerance},
+          {"solver/absolute_tolerance", &c.solver.absolute_tolerance}};
+}
+
+Status applyOverride(ShotConfiguration& configuration, const std::string& name, double value)
+{
+  for (const NamedParameter& parameter : numericParameters(configuration))
+    if (name == parameter.name)
+    {
+      *parameter.value = value;
+      return validate(configuration);
+    }
+  return invalidArgument(name, "is not a physical parameter that can be overridden");
+}
+
+Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfiguration& c)
+{
+  if (Status status = firstError(
+          {requireFinite(cue.tip, "cue_pose.position"), requireDirection(cue.direction, "cue_pose.orientation"),
+           requirePositive(cue.speed, "cue_speed"), requireFinite(cue.ball, "ball_position"), validate(c)});
+      !status)
+    return status.error();
+  const Eigen::Vector3d centre(cue.ball.x(), cue.ball.y(), c.ball_radius);
+  auto normal = hitNormal(cue.tip, cue.direction, centre, c.ball_radius);
+  if (!normal)
+    return normal.error();
+  CueStrike strike{c.cue_mass,     cue.direction, cue.speed,     c.ball_mass,      c.ball_radius,
+                   normal.value(), c.cue_contact, c.table.cloth, c.stiffness_ratio};
+  auto struck = solve(strike, c.solver);
+  if (!struck)
+    return struck.error();
+  BallState start;
+  start.position = centre;
+  start.velocity = struck.value().velocity;
+  start.angular_velocity = struck.value().angular_velocity;
+  MotionParameters motion = c.motion;
+  motion.impact = c.solver;
+  auto trajectory = predictTrajectory(start, Ball{c.ball_mass, c.ball_radius}, c.table, motion);
+  if (!trajectory)
+  {
+    Error error = trajectory.error();
+    if (error.field == "position")
+      error.field = "ball_position";  // the start of the trajectory is where the request put the ball
+    return error;
+  }
+  return ShotOutcome{std::move(struck).value(), std::move(trajectory).value(), centre + c.ball_radius * normal.value()};
+}
+
+}  // namespace billiard_shot_planner

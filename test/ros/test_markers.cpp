@@ -1,0 +1,85 @@
+// The marker builder's rules (conventions/ros.md): DELETEALL first, one namespace per meaning with unique ids, a
+// LINE_STRIP with at least two points and one colour per point, ARROWs with exactly two points, the table frame.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+#include "billiard_shot_planner/ros/trajectory_markers.hpp"
+#include "shot_fixtures.hpp"
+
+namespace bsp = billiard_shot_planner;
+using visualization_msgs::Marker;
+
+namespace
+{
+visualization_msgs::MarkerArray masseMarkers()
+{
+  const bsp::ShotConfiguration configuration;
+  const auto outcome = bsp::predictShot(shot_fixtures::masse(), configuration);
+  EXPECT_TRUE(outcome.ok());
+  return bsp::trajectoryMarkers(outcome.value(), configuration, "table", 0.01);
+}
+}  // namespace
+
+TEST(TrajectoryMarkers, DeleteAllFirstThenUniqueIdsPerNamespace)
+{
+  const auto array = masseMarkers();
+  ASSERT_GT(array.markers.size(), 10u);
+  EXPECT_EQ(array.markers.front().action, Marker::DELETEALL);
+  std::map<std::string, std::set<int>> ids;
+  for (std::size_t i = 1; i < array.markers.size(); ++i)
+  {
+    const Marker& m = array.markers[i];
+    EXPECT_EQ(m.action, Marker::ADD);
+    EXPECT_TRUE(ids[m.ns].insert(m.id).second) << m.ns << " " << m.id;
+    EXPECT_EQ(m.header.frame_id, "table");
+    EXPECT_GT(m.color.a, 0.0f);
+    EXPECT_DOUBLE_EQ(m.lifetime.toSec(), 0.0);
+  }
+  for (const char* ns : {"trajectory", "ball_start", "ball_end", "velocity", "spin", "hit_point", "cue", "events",
+                         "table", "cushions", "pockets"})
+    EXPECT_EQ(ids.count(ns), 1u) << ns;
+}
+
+TEST(TrajectoryMarkers, GeometryRules)
+{
+  for (const Marker& m : masseMarkers().markers)
+  {
+    if (m.type == Marker::LINE_STRIP)
+    {
+      EXPECT_GE(m.points.size(), 2u);
+      EXPECT_EQ(m.colors.size(), m.points.size());
+      EXPECT_GT(m.scale.x, 0.0);
+    }
+    if (m.type == Marker::ARROW)
+    {
+      EXPECT_EQ(m.points.size(), 2u) << m.ns;
+    }
+  }
+}
+
+TEST(TrajectoryMarkers, PathColouredByPhase)
+{
+  const auto array = masseMarkers();
+  const Marker* path = nullptr;
+  for (const Marker& m : array.markers)
+    if (m.ns == "trajectory")
+      path = &m;
+  ASSERT_TRUE(path);
+  std::set<std::tuple<float, float, float>> colours;
+  for (const auto& c : path->colors)
+    colours.insert({c.r, c.g, c.b});
+  // The massé ball hops, slides and rolls.
+  for (bsp::MotionPhase phase : {bsp::MotionPhase::Airborne, bsp::MotionPhase::Sliding, bsp::MotionPhase::Rolling})
+  {
+    const auto c = bsp::phaseColour(phase);
+    EXPECT_EQ(colours.count({c.r, c.g, c.b}), 1u) << bsp::toString(phase);
+  }
+  // The velocity arrow starts at the ball and points along the launch velocity (0.1 m per m/s).
+  for (const Marker& m : array.markers)
+    if (m.ns == "velocity")
+    {
+      EXPECT_NEAR(m.points[1].x - m.points[0].x, 0.1 * -2.0733, 1e-3);
+    }
+}

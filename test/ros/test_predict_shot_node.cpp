@@ -1,0 +1,301 @@
+// The shot_predictor node end to end (rostest): answers equal the core library's, frames do not matter, bad
+// input is answered with success = false and a reason, markers are latched arrays that replace each other, and
+// concurrent callers are all served.
+#include <billiard_shot_planner/PredictShot.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <set>
+#include <thread>
+
+#include "shot_fixtures.hpp"
+
+namespace bsp = billiard_shot_planner;
+
+namespace
+{
+const std::string SERVICE = "/shot_predictor/predict_shot";
+
+bsp::PredictShot::Request toRequest(const bsp::CuePlacement& cue, const std::string& frame = "table")
+{
+  bsp::PredictShot::Request r;
+  r.cue_pose.header.frame_id = frame;
+  r.cue_pose.pose.position.x = cue.tip.x();
+  r.cue_pose.pose.position.y = cue.tip.y();
+  r.cue_pose.pose.position.z = cue.tip.z();
+  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), cue.direction);
+  r.cue_pose.pose.orientation.x = q.x();
+  r.cue_pose.pose.orientation.y = q.y();
+  r.cue_pose.pose.orientation.z = q.z();
+  r.cue_pose.pose.orientation.w = q.w();
+  r.cue_speed = cue.speed;
+  r.ball_position.header.frame_id = frame;
+  r.ball_position.point.x = cue.ball.x();
+  r.ball_position.point.y = cue.ball.y();
+  r.ball_position.point.z = 0.0286;
+  return r;
+}
+
+bsp::PredictShot::Response call(const bsp::PredictShot::Request& request)
+{
+  bsp::PredictShot srv;
+  srv.request = request;
+  EXPECT_TRUE(ros::service::call(SERVICE, srv));
+  return srv.response;
+}
+
+class PredictShotNode : public testing::Test
+{
+protected:
+  static void SetUpTestSuite() { ASSERT_TRUE(ros::service::waitForService(SERVICE, ros::Duration(30))); }
+};
+}  // namespace
+
+TEST_F(PredictShotNode, AnswerEqualsTheCoreLibrary)
+{
+  const auto response = call(toRequest(shot_fixtures::masse()));
+  ASSERT_TRUE(response.success) << response.message;
+  // The node computes the cue direction from the quaternion; the core test uses the same placement.
+  bsp::CuePlacement cue = shot_fixtures::masse();
+  const auto& o = toRequest(cue).cue_pose.pose.orientation;
+  cue.direction = Eigen::Quaterniond(o.w, o.x, o.y, o.z).normalized() * Eigen::Vector3d::UnitX();
+  const auto expected = bsp::predictShot(cue, bsp::ShotConfiguration{}).value();
+  EXPECT_NEAR(response.ball_velocity.x, expected.strike.velocity.x(), 1e-12);
+  EXPECT_NEAR(response.ball_velocity.y, expected.strike.velocity.y(), 1e-12);
+  EXPECT_NEAR(response.ball_velocity.z, expected.strike.velocity.z(), 1e-12);
+  EXPECT_NEAR(response.ball_angular_velocity.x, expected.strike.angular_velocity.x(), 1e-12);
+  EXPECT_NEAR(response.ball_angular_velocity.y, expected.strike.angular_velocity.y(), 1e-12);
+  EXPECT_NEAR(response.ball_angular_velocity.z, expected.strike.angular_velocity.z(), 1e-12);
+  EXPECT_EQ(response.states, expected.strike.states);
+  EXPECT_EQ(response.prediction.outcome, bsp::toString(expected.trajectory.outcome));
+  EXPECT_NEAR(response.prediction.final_position.x, expected.trajectory.finalState().position.x(), 1e-12);
+  EXPECT_NEAR(response.prediction.final_position.y, expected.trajectory.finalState().position.y(), 1e-12);
+  EXPECT_NEAR(response.prediction.cue_speed_after, expected.strike.cue_velocity, 1e-12);
+  EXPECT_EQ(response.prediction.header.frame_id, "table");
+  EXPECT_FALSE(response.prediction.trajectory.empty());
+}
+
+TEST_F(PredictShotNode, SameShotInAnotherFrameGivesTheSamePrediction)
+{
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  const auto in_table = toRequest(shot_fixtures::masse());
+  auto in_rotated = in_table;
+  in_rotated.cue_pose = buffer.transform(in_table.cue_pose, "rotated", ros::Duration(5.0));
+  in_rotated.ball_position = buffer.transform(in_table.ball_position, "rotated", ros::Duration(5.0));
+  ASSERT_NE(in_rotated.cue_pose.pose.position.x, in_table.cue_pose.pose.position.x);
+  const auto a = call(in_table), b = call(in_rotated);
+  ASSERT_TRUE(a.success && b.success) << a.message << " / " << b.message;
+  EXPECT_EQ(a.states, b.states);
+  EXPECT_NEAR(a.ball_velocity.x, b.ball_velocity.x, 1e-9);
+  EXPECT_NEAR(a.ball_velocity.y, b.ball_velocity.y, 1e-9);
+  EXPECT_NEAR(a.ball_velocity.z, b.ball_velocity.z, 1e-9);
+  EXPECT_NEAR(a.ball_angular_velocity.y, b.ball_angular_velocity.y, 1e-7);
+  EXPECT_NEAR(a.prediction.final_position.x, b.prediction.final_position.x, 1e-6);
+  EXPECT_EQ(b.prediction.header.frame_id, "table");
+}
+
+TEST_F(PredictShotNode, BadInputIsAnsweredWithAReason)
+{
+  struct Case
+  {
+    const char* what;
+    bsp::PredictShot::Request request;
+    const char* message;
+  };
+  std::vector<Case> cases;
+  auto base = toRequest(shot_fixtures::masse());
+  auto r = base;
+  r.cue_pose.pose.position.x = std::nan("");
+  cases.push_back({"NaN in the pose", r, "cue_pose.pose.position"});
+  r = base;
+  r.cue_speed = 0.0;
+  cases.push_back({"zero speed", r, "cue_speed"});
+  r = base;
+  r.cue_speed = -1.0;
+  cases.push_back({"negative speed", r, "cue_speed"});
+  r = base;
+  r.cue_pose.pose.orientation.w *= 2.0;
+  cases.push_back({"non-unit quaternion", r, "unit quaternion"});
+  r = toRequest(
+      []
+      {
+        auto cue = shot_fixtures::masse();
+        cue.direction = -cue.direction;
+        cue.tip = Eigen::Vector3d(0.6, 0.1, 0.0286) + 0.0286 * Eigen::Vector3d(0.480151, -0.102889, 0.871131) +
+                  0.05 * cue.direction;
+        return cue;
+      }());
+  cases.push_back({"cue pointing away", r, "behind the cue"});
+  r = toRequest(
+      []
+      {
+        auto cue = shot_fixtures::follow();
+        cue.tip.y() += 0.2;
+        return cue;
+      }());
+  cases.push_back({"axis misses the ball", r, "misses the ball"});
+  r = toRequest(
+      []
+      {
+        auto cue = shot_fixtures::follow();
+        cue.tip.x() += 3.0;
+        cue.ball.x() += 3.0;
+        return cue;
+      }());
+  cases.push_back({"ball outside the table", r, "off the table"});
+  r = base;
+  r.cue_pose.header.frame_id = "no_such_frame";
+  cases.push_back({"unknown frame", r, "cue_pose.header.frame_id"});
+  r = base;
+  r.override_names = {"cue_contact/friction"};
+  r.override_values = {-0.5};
+  cases.push_back({"bad override", r, "cue_contact/friction"});
+  for (const Case& c : cases)
+  {
+    const auto response = call(c.request);
+    EXPECT_FALSE(response.success) << c.what;
+    EXPECT_NE(response.message.find(c.message), std::string::npos) << c.what << ": " << response.message;
+  }
+}
+
+TEST_F(PredictShotNode, OverridesChangeThePrediction)
+{
+  auto request = toRequest(shot_fixtures::masse());
+  const auto plain = call(request);
+  request.override_names = {"cue_contact/eta2"};
+  request.override_values = {2.0};
+  const auto softer = call(request);
+  ASSERT_TRUE(plain.success && softer.success);
+  EXPECT_GT(std::abs(plain.ball_angular_velocity.y - softer.ball_angular_velocity.y), 1e-3);
+}
+
+TEST_F(PredictShotNode, MarkersAreLatchedArraysThatReplaceEachOther)
+{
+  ros::NodeHandle nh;
+  std::vector<visualization_msgs::MarkerArray> received;
+  std::mutex mutex;
+  auto subscriber =
+      nh.subscribe<visualization_msgs::MarkerArray>("/shot_predictor/trajectory_markers", 10,
+                                                    [&](const visualization_msgs::MarkerArray::ConstPtr& m)
+                                                    {
+                                                      std::lock_guard<std::mutex> lock(mutex);
+                                                      received.push_back(*m);
+                                                    });
+  auto wait_for = [&](std::size_t count)
+  {
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(20.0);
+    while (ros::WallTime::now() < deadline)
+    {
+      ros::spinOnce();
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (received.size() >= count)
+          return true;
+      }
+      ros::WallDuration(0.01).sleep();
+    }
+    return false;
+  };
+  ASSERT_TRUE(call(toRequest(shot_fixtures::masse())).success);
+  ASSERT_TRUE(wait_for(1));  // the latched array (of this or an earlier call) arrives
+  ASSERT_TRUE(call(toRequest(shot_fixtures::follow())).success);
+  ASSERT_TRUE(wait_for(2));
+  std::lock_guard<std::mutex> lock(mutex);
+  const auto& last = received.back();
+  ASSERT_FALSE(last.markers.empty());
+  EXPECT_EQ(last.markers.front().action, visualization_msgs::Marker::DELETEALL);
+  std::set<std::string> namespaces;
+  for (const auto& m : last.markers)
+    namespaces.insert(m.ns);
+  for (const char* ns : {"trajectory", "ball_start", "ball_end", "velocity", "spin", "hit_point", "cue", "table"})
+    EXPECT_EQ(namespaces.count(ns), 1u) << ns;
+  // The second array is the follow shot's: its ball starts at (−0.6, −0.2).
+  for (const auto& m : last.markers)
+    if (m.ns == "ball_start")
+    {
+      EXPECT_NEAR(m.pose.position.x, -0.6, 1e-9);
+    }
+}
+
+TEST_F(PredictShotNode, PredictionIsPublished)
+{
+  ros::NodeHandle nh;
+  std::atomic<int> received{0};
+  std::atomic<double> velocity{0.0};
+  auto subscriber = nh.subscribe<bsp::ShotPrediction>("/shot_predictor/prediction", 10,
+                                                      [&](const bsp::ShotPrediction::ConstPtr& m)
+                                                      {
+                                                        velocity = m->ball_velocity.x;
+                                                        ++received;
+                                                      });
+  const ros::WallTime connect_deadline = ros::WallTime::now() + ros::WallDuration(10.0);
+  while (subscriber.getNumPublishers() == 0 && ros::WallTime::now() < connect_deadline)
+    ros::WallDuration(0.01).sleep();
+  const auto response = call(toRequest(shot_fixtures::masse()));
+  ASSERT_TRUE(response.success);
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(10.0);
+  while (received == 0 && ros::WallTime::now() < deadline)
+  {
+    ros::spinOnce();
+    ros::WallDuration(0.01).sleep();
+  }
+  ASSERT_GT(received.load(), 0);
+  EXPECT_EQ(velocity.load(), response.ball_velocity.x);
+}
+
+TEST_F(PredictShotNode, ConcurrentCallersAreAllAnsweredCorrectly)
+{
+  const auto request = toRequest(shot_fixtures::follow());
+  const auto reference = call(request);
+  ASSERT_TRUE(reference.success);
+  std::atomic<int> correct{0};
+  std::vector<double> latencies_ms;
+  std::mutex latency_mutex;
+  std::vector<std::thread> clients;
+  for (int c = 0; c < 8; ++c)
+    clients.emplace_back(
+        [&]
+        {
+          ros::NodeHandle nh;
+          ros::ServiceClient client = nh.serviceClient<bsp::PredictShot>(SERVICE, /*persistent=*/true);
+          for (int i = 0; i < 200; ++i)
+          {
+            bsp::PredictShot srv;
+            srv.request = request;
+            const auto start = std::chrono::steady_clock::now();
+            const bool ok = client.call(srv);
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            if (ok && srv.response.success && srv.response.ball_velocity.x == reference.ball_velocity.x &&
+                srv.response.prediction.final_position.y == reference.prediction.final_position.y)
+              ++correct;
+            std::lock_guard<std::mutex> lock(latency_mutex);
+            latencies_ms.push_back(ms);
+          }
+        });
+  for (auto& t : clients)
+    t.join();
+  EXPECT_EQ(correct.load(), 8 * 200);
+  std::sort(latencies_ms.begin(), latencies_ms.end());
+  std::printf("8 clients x 200 calls: round trip p50 %.2f ms, p99 %.2f ms\n", latencies_ms[latencies_ms.size() / 2],
+              latencies_ms[latencies_ms.size() * 99 / 100]);
+}
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_predict_shot_node");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}

@@ -1,0 +1,38 @@
+// Core prediction → ShotPrediction message: every field carries the core's value.
+#include <gtest/gtest.h>
+
+#include "billiard_shot_planner/ros/prediction_message.hpp"
+#include "shot_fixtures.hpp"
+
+namespace bsp = billiard_shot_planner;
+
+TEST(PredictionMessage, CarriesTheCoreResult)
+{
+  const auto outcome = bsp::predictShot(shot_fixtures::masse(), bsp::ShotConfiguration{}).value();
+  const auto m = bsp::toMessage(outcome, "table", 0.01);
+  EXPECT_EQ(m.header.frame_id, "table");
+  EXPECT_EQ(m.ball_velocity.x, outcome.strike.velocity.x());
+  EXPECT_EQ(m.ball_angular_velocity.z, outcome.strike.angular_velocity.z());
+  EXPECT_EQ(m.hit_point.z, outcome.hit_point.z());
+  EXPECT_EQ(m.cue_speed_after, outcome.strike.cue_velocity);
+  EXPECT_EQ(m.impulse_table.z, outcome.strike.impulse_table.z());
+  EXPECT_EQ(m.states, outcome.strike.states);
+  EXPECT_EQ(m.contact_events.size(), outcome.strike.impact.events.size());
+  EXPECT_EQ(m.trajectory_events.size(), outcome.trajectory.events.size());
+  EXPECT_EQ(m.outcome, bsp::toString(outcome.trajectory.outcome));
+  EXPECT_EQ(m.final_position.x, outcome.trajectory.finalState().position.x());
+  EXPECT_EQ(m.trajectory.size(), outcome.trajectory.sample(0.01).size());
+  EXPECT_EQ(m.trajectory.front().phase, billiard_shot_planner::PathSample::AIRBORNE);
+}
+
+TEST(ShotPrediction, OverridesAreValidatedByName)
+{
+  bsp::ShotConfiguration c;
+  EXPECT_TRUE(bsp::applyOverride(c, "cue_contact/friction", 0.5).ok());
+  EXPECT_EQ(c.cue_contact.friction, 0.5);
+  EXPECT_EQ(bsp::applyOverride(c, "cue_contact/friction", -1).error().field, "cue_contact/friction");
+  EXPECT_EQ(bsp::applyOverride(c, "warp_drive", 1).error().field, "warp_drive");
+  bsp::ShotConfiguration d;
+  d.table.cloth.eta2 = 0;
+  EXPECT_EQ(bsp::validate(d).error().field, "table/cloth/eta2");
+}
