@@ -8,6 +8,7 @@
 
 #include "billiard_shot_planner/ros/prediction_message.hpp"
 #include "billiard_shot_planner/ros/trajectory_markers.hpp"
+#include "billiard_shot_planner/ros/tuning.hpp"
 
 namespace billiard_shot_planner
 {
@@ -47,13 +48,34 @@ ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& pri
   settings_ = settings.value();
   prediction_publisher_ = private_node.advertise<ShotPrediction>("prediction", 10);
   marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("trajectory_markers", 1, true);
+  // The tuning server starts from the loaded parameters, not from the .cfg defaults.
+  tuning_server_ =
+      std::make_unique<dynamic_reconfigure::Server<ShotPredictorConfig>>(ros::NodeHandle(private_node, "tuning"));
+  tuning_server_->updateConfig(toTuning(settings_.shot));
+  tuning_server_->setCallback([this](ShotPredictorConfig& tuning, uint32_t level) { retune(tuning, level); });
   service_ = private_node.advertiseService("predict_shot", &ShotPredictorNode::predict, this);
   ROS_INFO("predict_shot ready: answers in frame '%s'", settings_.target_frame.c_str());
 }
 
+void ShotPredictorNode::retune(ShotPredictorConfig& tuning, uint32_t /*level*/)
+{
+  std::lock_guard<std::mutex> lock(configuration_mutex_);
+  auto tuned = applyTuning(settings_.shot, tuning);
+  if (!tuned)
+  {
+    ROS_ERROR("tuning rejected, parameters unchanged: %s", tuned.error().describe().c_str());
+    return;
+  }
+  settings_.shot = tuned.value();
+}
+
 Expected<ShotConfiguration> ShotPredictorNode::configurationFor(const PredictShot::Request& request) const
 {
-  ShotConfiguration configuration = settings_.shot;
+  ShotConfiguration configuration;
+  {
+    std::lock_guard<std::mutex> lock(configuration_mutex_);
+    configuration = settings_.shot;
+  }
   for (std::size_t i = 0; i < request.override_names.size(); ++i)
     if (Status status = applyOverride(configuration, request.override_names[i], request.override_values[i]); !status)
       return Error{status.error().code, "override " + status.error().field, status.error().message};

@@ -2,6 +2,7 @@
 // input is answered with success = false and a reason, markers are latched arrays that replace each other, and
 // concurrent callers are all served.
 #include <billiard_shot_planner/PredictShot.h>
+#include <dynamic_reconfigure/Reconfigure.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
@@ -180,6 +181,32 @@ TEST_F(PredictShotNode, OverridesChangeThePrediction)
   EXPECT_GT(std::abs(plain.ball_angular_velocity.y - softer.ball_angular_velocity.y), 1e-3);
 }
 
+TEST_F(PredictShotNode, RunTimeTuningChangesThePrediction)
+{
+  auto tune = [](double eta2)
+  {
+    dynamic_reconfigure::Reconfigure srv;
+    dynamic_reconfigure::DoubleParameter value;
+    value.name = "cue_contact_eta2";
+    value.value = eta2;
+    srv.request.config.doubles.push_back(value);
+    return ros::service::call("/shot_predictor/tuning/set_parameters", srv);
+  };
+  auto request = toRequest(shot_fixtures::masse());
+  auto overridden = request;
+  overridden.override_names = {"cue_contact/eta2"};
+  overridden.override_values = {2.0};
+  const auto expected = call(overridden);
+  ASSERT_TRUE(tune(2.0));
+  const auto tuned = call(request);
+  ASSERT_TRUE(tune(7.0));
+  const auto restored = call(request);
+  ASSERT_TRUE(expected.success && tuned.success && restored.success);
+  EXPECT_EQ(tuned.ball_angular_velocity.y, expected.ball_angular_velocity.y);
+  EXPECT_EQ(restored.ball_angular_velocity.y, call(request).ball_angular_velocity.y);
+  EXPECT_NE(restored.ball_angular_velocity.y, tuned.ball_angular_velocity.y);
+}
+
 TEST_F(PredictShotNode, MarkersAreLatchedArraysThatReplaceEachOther)
 {
   ros::NodeHandle nh;
@@ -290,6 +317,15 @@ TEST_F(PredictShotNode, ConcurrentCallersAreAllAnsweredCorrectly)
   std::sort(latencies_ms.begin(), latencies_ms.end());
   std::printf("8 clients x 200 calls: round trip p50 %.2f ms, p99 %.2f ms\n", latencies_ms[latencies_ms.size() / 2],
               latencies_ms[latencies_ms.size() * 99 / 100]);
+}
+
+TEST_F(PredictShotNode, ABadParameterStopsTheNode)
+{
+  // The node with ball_radius = −0.01 exits at start-up; its service never appears.
+  EXPECT_FALSE(ros::service::waitForService("/bad_predictor/predict_shot", ros::Duration(3.0)));
+  std::vector<std::string> nodes;
+  ASSERT_TRUE(ros::master::getNodes(nodes));
+  EXPECT_EQ(std::count(nodes.begin(), nodes.end(), "/bad_predictor"), 0);
 }
 
 int main(int argc, char** argv)

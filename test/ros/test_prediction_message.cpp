@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "billiard_shot_planner/ros/prediction_message.hpp"
+#include "billiard_shot_planner/ros/tuning.hpp"
 #include "shot_fixtures.hpp"
 
 namespace bsp = billiard_shot_planner;
@@ -35,4 +36,22 @@ TEST(ShotPrediction, OverridesAreValidatedByName)
   bsp::ShotConfiguration d;
   d.table.cloth.eta2 = 0;
   EXPECT_EQ(bsp::validate(d).error().field, "table/cloth/eta2");
+}
+
+TEST(Tuning, RoundTripAndRejection)
+{
+  bsp::ShotConfiguration c;
+  c.cue_contact.friction = 0.55;
+  c.motion.rolling_model = bsp::RollingModel::Pooltool;
+  auto tuning = bsp::toTuning(c);
+  EXPECT_EQ(tuning.cue_contact_friction, 0.55);
+  EXPECT_EQ(tuning.rolling_model, "pooltool");
+  tuning.cloth_eta2 = 4.0;
+  const auto tuned = bsp::applyTuning(c, tuning).value();
+  EXPECT_EQ(tuned.table.cloth.eta2, 4.0);
+  EXPECT_EQ(tuned.cue_contact.friction, 0.55);
+  tuning.ball_radius = 0.05;  // the cushion nose (0.0363 m) would be below the ball's centre... still valid
+  EXPECT_TRUE(bsp::applyTuning(c, tuning).ok());
+  tuning.ball_radius = 0.015;  // nose above the ball: rejected
+  EXPECT_EQ(bsp::applyTuning(c, tuning).error().field, "table/cushion_height");
 }

@@ -1,9 +1,14 @@
 #pragma once
 
 #include <billiard_shot_planner/PredictShot.h>
+#include <billiard_shot_planner/ShotPredictorConfig.h>
+#include <dynamic_reconfigure/server.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
+
+#include <memory>
+#include <mutex>
 
 #include "billiard_shot_planner/ros/node_settings.hpp"
 
@@ -11,7 +16,8 @@ namespace billiard_shot_planner
 {
 /// The ROS face of the core library: ~predict_shot in, ~prediction and ~trajectory_markers out. A thin adapter:
 /// messages and tf2 in, predictShot(), messages and markers out. The core is pure and thread-safe, so the service
-/// may be served by several threads at once.
+/// may be served by several threads at once; the physical parameters can be tuned at run time (~tuning, through
+/// dynamic_reconfigure), each request using a consistent snapshot of them.
 class ShotPredictorNode
 {
 public:
@@ -24,8 +30,11 @@ private:
   bool predict(PredictShot::Request& request, PredictShot::Response& response);
   Expected<CuePlacement> placeCue(const PredictShot::Request& request) const;
   Expected<ShotConfiguration> configurationFor(const PredictShot::Request& request) const;
+  void retune(ShotPredictorConfig& tuning, uint32_t level);
 
   NodeSettings settings_;
+  mutable std::mutex configuration_mutex_;  ///< guards settings_.shot against run-time tuning
+  std::unique_ptr<dynamic_reconfigure::Server<ShotPredictorConfig>> tuning_server_;
   tf2_ros::Buffer buffer_;
   tf2_ros::TransformListener listener_{buffer_};
   ros::Publisher prediction_publisher_;
