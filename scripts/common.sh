@@ -42,6 +42,9 @@ install_packages() {
 # configure_and_build [extra cmake args...]
 configure_and_build() {
   log "Configuring in ${BUILD_DIR}"
+  # catkin's cached test environment puts the devel space's Python path on PYTHONPATH only if it exists at
+  # configure time; on a fresh clone the generated message modules land there after the first build.
+  mkdir -p "${BUILD_DIR}/devel/lib/python3/dist-packages"
   cmake -S "$REPO_ROOT" -B "$BUILD_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
   log "Building"
   make -C "$BUILD_DIR" -j"$(nproc)" --no-print-directory
