@@ -31,17 +31,7 @@ bsp::BallChain elasticChain(std::size_t balls)
 /// The paper's massé shot with the errata's mass and radius, literal cue direction.
 bsp::CueStrike masse()
 {
-  bsp::CueStrike s;
-  s.cue_mass = 0.5018;
-  s.cue_direction = {-0.2761, -0.1388, -0.9511};
-  s.cue_speed = 3.089095;
-  s.ball_mass = 0.17;
-  s.ball_radius = 0.0286;
-  s.hit_normal = {0.480151, -0.102889, 0.871131};
-  s.cue_contact = {0.656532, 0.7, 7.0};
-  s.table_contact = {0.51625, 0.152479, 10.0};
-  s.stiffness_ratio = 0.8;
-  return s;
+  return bsp::paperMasseStrike();
 }
 
 bsp::SolverOptions withTolerance(double relative)

@@ -75,17 +75,7 @@ void printVector(const char* label, const Eigen::Vector3d& v)
 bool reportMasse()
 {
   std::printf("\nThe massé shot of section 9.2 (m = 0.17 kg, r = 0.0286 m; see README for the corrections)\n");
-  bsp::CueStrike s;
-  s.cue_mass = 0.5018;
-  s.cue_direction = {-0.2761, -0.1388, -0.9511};
-  s.cue_speed = 3.089095;
-  s.ball_mass = 0.17;
-  s.ball_radius = 0.0286;
-  s.hit_normal = {0.480151, -0.102889, 0.871131};
-  s.cue_contact = {0.656532, 0.7, 7.0};
-  s.table_contact = {0.51625, 0.152479, 10.0};
-  s.stiffness_ratio = 0.8;
-  const auto result = bsp::solve(s);
+  const auto result = bsp::solve(bsp::paperMasseStrike());
   if (!result)
   {
     std::printf("  error: %s\n", result.error().describe().c_str());

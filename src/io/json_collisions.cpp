@@ -1,6 +1,7 @@
 #include <string>
 #include <tuple>
 
+#include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
 #include "billiard_shot_planner/scenarios/ball_chain.hpp"
 #include "json_fields.hpp"
@@ -13,17 +14,12 @@ Expected<json> solveBallBallTable(const json& request, const SolverOptions& opti
 {
   BallBallTable c;
   // m1 and v0 default to the paper's normalisation (m1 = 1, v0 = −1); the rest are required.
-  const std::optional<double> required;
-  for (auto [key, target, fallback] :
-       {std::tuple{"m1", &c.m1, std::optional<double>(c.m1)}, std::tuple{"m2", &c.m2, required},
-        std::tuple{"stiffness_ratio", &c.stiffness_ratio, required}, std::tuple{"e1", &c.e1, required},
-        std::tuple{"e2", &c.e2, required}, std::tuple{"v0", &c.v0, std::optional<double>(c.v0)}})
-  {
-    auto value = number(request, key, fallback);
-    if (!value)
-      return value.error();
-    *target = value.value();
-  }
+  if (Status status = firstError(
+          {readNumbers(request, {{"m2", &c.m2}, {"stiffness_ratio", &c.stiffness_ratio}, {"e1", &c.e1}, {"e2", &c.e2}},
+                       "", Presence::Required),
+           readNumbers(request, {{"m1", &c.m1}, {"v0", &c.v0}})});
+      !status)
+    return status.error();
   auto result = solve(c, options);
   if (!result)
     return result.error();

@@ -100,6 +100,19 @@ Expected<json> object(const json& parent, const std::string& key, bool required)
   return parent.at(key);
 }
 
+Status readNumbers(const json& object, std::initializer_list<std::pair<const char*, double*>> fields,
+                   const std::string& prefix, Presence presence)
+{
+  for (auto [name, target] : fields)
+  {
+    auto value = number(object, name, presence == Presence::Optional ? std::optional<double>(*target) : std::nullopt);
+    if (!value)
+      return prefix.empty() ? value.error() : nested(prefix, value.error());
+    *target = value.value();
+  }
+  return {};
+}
+
 Error nested(const std::string& prefix, Error error)
 {
   error.field = error.field.empty() ? prefix : prefix + "." + error.field;

@@ -20,6 +20,15 @@ using nlohmann::json;
 
 /// object[key] as a number; `fallback` when absent (required when there is none).
 Expected<double> number(const json& object, const std::string& key, std::optional<double> fallback = std::nullopt);
+/// Reads several numbers into their targets. Optional fields keep the target's value when absent; errors get
+/// `prefix` ("table.cloth.friction").
+enum class Presence
+{
+  Optional,
+  Required,
+};
+Status readNumbers(const json& object, std::initializer_list<std::pair<const char*, double*>> fields,
+                   const std::string& prefix = "", Presence presence = Presence::Optional);
 /// object[key] as an array of numbers.
 Expected<std::vector<double>> numbers(const json& object, const std::string& key);
 /// object[key] as [x, y, z]; `fallback` when absent.

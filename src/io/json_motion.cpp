@@ -26,19 +26,6 @@ Expected<Eigen::Vector2d> vector2(const json& object, const std::string& key)
   return Eigen::Vector2d(values.value()[0], values.value()[1]);
 }
 
-Status readNumbers(const json& object, std::initializer_list<std::pair<const char*, double*>> fields,
-                   const std::string& prefix = "")
-{
-  for (auto [name, target] : fields)
-  {
-    auto value = number(object, name, *target);
-    if (!value)
-      return prefix.empty() ? value.error() : nested(prefix, value.error());
-    *target = value.value();
-  }
-  return {};
-}
-
 Expected<std::vector<Pocket>> pockets(const json& table)
 {
   const json& list = table.at("pockets");

@@ -49,15 +49,15 @@ Expected<Eigen::Vector3d> hitNormalField(const json& request, const CueStrike& s
 Expected<CueStrike> cueStrikeFromJson(const json& request)
 {
   CueStrike strike;
-  for (auto [name, target] : {std::pair{"cue_mass", &strike.cue_mass}, std::pair{"cue_speed", &strike.cue_speed},
-                              std::pair{"ball_mass", &strike.ball_mass}, std::pair{"ball_radius", &strike.ball_radius},
-                              std::pair{"stiffness_ratio", &strike.stiffness_ratio}})
-  {
-    auto value = number(request, name);
-    if (!value)
-      return value.error();
-    *target = value.value();
-  }
+  if (Status status = readNumbers(request,
+                                  {{"cue_mass", &strike.cue_mass},
+                                   {"cue_speed", &strike.cue_speed},
+                                   {"ball_mass", &strike.ball_mass},
+                                   {"ball_radius", &strike.ball_radius},
+                                   {"stiffness_ratio", &strike.stiffness_ratio}},
+                                  "", Presence::Required);
+      !status)
+    return status.error();
   auto direction = vector3(request, "cue_direction");
   if (!direction)
     return direction.error();
@@ -105,13 +105,10 @@ Expected<json> solveCueStrike(const json& request, const SolverOptions& options)
 Expected<json> solveBallTable(const json& request, const SolverOptions& options)
 {
   BallTableImpact impact;
-  for (auto [name, target] : {std::pair{"mass", &impact.mass}, std::pair{"radius", &impact.radius}})
-  {
-    auto value = number(request, name);
-    if (!value)
-      return value.error();
-    *target = value.value();
-  }
+  if (Status status =
+          readNumbers(request, {{"mass", &impact.mass}, {"radius", &impact.radius}}, "", Presence::Required);
+      !status)
+    return status.error();
   auto velocity = vector3(request, "velocity");
   if (!velocity)
     return velocity.error();

@@ -1,5 +1,7 @@
 #include "billiard_shot_planner/ros/prediction_message.hpp"
 
+#include "geometry_conversions.hpp"
+
 namespace billiard_shot_planner
 {
 namespace
@@ -11,34 +13,16 @@ static_assert(PathSample::AIRBORNE == static_cast<int>(MotionPhase::Airborne) &&
                   PathSample::STATIONARY == static_cast<int>(MotionPhase::Stationary),
               "PathSample.msg's phase constants must follow MotionPhase");
 
-geometry_msgs::Vector3 vector(const Eigen::Vector3d& v)
-{
-  geometry_msgs::Vector3 m;
-  m.x = v.x();
-  m.y = v.y();
-  m.z = v.z();
-  return m;
-}
-
-geometry_msgs::Point point(const Eigen::Vector3d& p)
-{
-  geometry_msgs::Point m;
-  m.x = p.x();
-  m.y = p.y();
-  m.z = p.z();
-  return m;
-}
-
 void fillStrike(ShotPrediction& m, const CueStrikeResult& strike, const Eigen::Vector3d& hit_point)
 {
-  m.ball_velocity = vector(strike.velocity);
-  m.ball_angular_velocity = vector(strike.angular_velocity);
-  m.hit_point = point(hit_point);
-  m.hit_normal = vector(strike.hit_normal);
-  m.cue_direction = vector(strike.cue_direction);
+  m.ball_velocity = toVector3(strike.velocity);
+  m.ball_angular_velocity = toVector3(strike.angular_velocity);
+  m.hit_point = toPoint(hit_point);
+  m.hit_normal = toVector3(strike.hit_normal);
+  m.cue_direction = toVector3(strike.cue_direction);
   m.cue_speed_after = strike.cue_velocity;
-  m.impulse_cue = vector(strike.impulse_cue);
-  m.impulse_table = vector(strike.impulse_table);
+  m.impulse_cue = toVector3(strike.impulse_cue);
+  m.impulse_table = toVector3(strike.impulse_table);
   m.states = strike.states;
   m.miscue = strike.miscue;
   m.converged = strike.impact.converged;
@@ -65,9 +49,9 @@ void fillTrajectory(ShotPrediction& m, const BallTrajectory& trajectory, double 
     TrajectoryEvent event;
     event.type = toString(e.type);
     event.time = e.time;
-    event.position = point(e.state.position);
-    event.velocity = vector(e.state.velocity);
-    event.angular_velocity = vector(e.state.angular_velocity);
+    event.position = toPoint(e.state.position);
+    event.velocity = toVector3(e.state.velocity);
+    event.angular_velocity = toVector3(e.state.angular_velocity);
     event.cushion = e.cushion;
     event.pocket = e.pocket;
     m.trajectory_events.push_back(event);
@@ -75,13 +59,13 @@ void fillTrajectory(ShotPrediction& m, const BallTrajectory& trajectory, double 
     if (e.type == MotionEventType::Pocketed)
       m.pocket = e.pocket;
   }
-  m.final_position = point(trajectory.finalState().position);
+  m.final_position = toPoint(trajectory.finalState().position);
   m.duration = trajectory.duration();
   for (const TrajectorySample& s : trajectory.sample(spacing))
   {
     PathSample sample;
     sample.time = s.time;
-    sample.position = point(s.state.position);
+    sample.position = toPoint(s.state.position);
     sample.phase = static_cast<uint8_t>(s.phase);  // the message constants follow MotionPhase's order
     m.trajectory.push_back(sample);
   }

@@ -1,5 +1,7 @@
 #include "billiard_shot_planner/ros/trajectory_markers.hpp"
 
+#include "geometry_conversions.hpp"
+
 #include <Eigen/Geometry>
 
 namespace billiard_shot_planner
@@ -16,15 +18,6 @@ std_msgs::ColorRGBA rgba(float r, float g, float b, float a = 1.0f)
   c.b = b;
   c.a = a;
   return c;
-}
-
-geometry_msgs::Point point(const Eigen::Vector3d& p)
-{
-  geometry_msgs::Point m;
-  m.x = p.x();
-  m.y = p.y();
-  m.z = p.z();
-  return m;
 }
 
 /// A marker of one meaning: its own namespace, identity orientation, forever until the next DELETEALL.
@@ -45,7 +38,7 @@ Marker sphere(const std::string& frame, const std::string& ns, const Eigen::Vect
               const std_msgs::ColorRGBA& colour)
 {
   Marker m = marker(frame, ns, 0, Marker::SPHERE);
-  m.pose.position = point(centre);
+  m.pose.position = toPoint(centre);
   m.scale.x = m.scale.y = m.scale.z = diameter;
   m.color = colour;
   return m;
@@ -55,7 +48,7 @@ Marker arrow(const std::string& frame, const std::string& ns, const Eigen::Vecto
              const std_msgs::ColorRGBA& colour)
 {
   Marker m = marker(frame, ns, 0, Marker::ARROW);
-  m.points = {point(from), point(to)};
+  m.points = {toPoint(from), toPoint(to)};
   m.scale.x = 0.006;  // shaft diameter
   m.scale.y = 0.012;  // head diameter
   m.scale.z = 0.0;    // head length: rviz's default share
@@ -70,7 +63,7 @@ Marker path(const ShotOutcome& outcome, const std::string& frame, double spacing
   m.color = phaseColour(MotionPhase::Sliding);
   for (const TrajectorySample& s : outcome.trajectory.sample(spacing))
   {
-    m.points.push_back(point(s.state.position));
+    m.points.push_back(toPoint(s.state.position));
     m.colors.push_back(phaseColour(s.phase));
   }
   if (m.points.size() == 1)  // a LINE_STRIP needs two points
@@ -88,7 +81,7 @@ Marker cue(const ShotOutcome& outcome, const std::string& frame, const MarkerSty
   const Eigen::Vector3d c = outcome.strike.cue_direction;
   const Eigen::Vector3d tip = outcome.hit_point;
   const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), -c);
-  m.pose.position = point(tip - 0.5 * style.cue_length * c);
+  m.pose.position = toPoint(tip - 0.5 * style.cue_length * c);
   m.pose.orientation.x = q.x();
   m.pose.orientation.y = q.y();
   m.pose.orientation.z = q.z();
@@ -105,7 +98,7 @@ Marker events(const ShotOutcome& outcome, const std::string& frame)
   m.scale.x = m.scale.y = m.scale.z = 0.015;
   m.color = rgba(1.0f, 1.0f, 0.0f);
   for (const MotionEvent& e : outcome.trajectory.events)
-    m.points.push_back(point(e.state.position));
+    m.points.push_back(toPoint(e.state.position));
   return m;
 }
 

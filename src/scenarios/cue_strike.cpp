@@ -65,6 +65,21 @@ Eigen::Vector3d worldImpulse(const ContactImpulse& impulse, const Eigen::Matrix3
 }
 }  // namespace
 
+CueStrike paperMasseStrike(const Eigen::Vector3d& cue_direction)
+{
+  CueStrike s;
+  s.cue_mass = 0.5018;
+  s.cue_direction = cue_direction;
+  s.cue_speed = 3.089095;
+  s.ball_mass = 0.17;
+  s.ball_radius = 0.0286;
+  s.hit_normal = {0.480151, -0.102889, 0.871131};
+  s.cue_contact = {0.656532, 0.7, 7.0};
+  s.table_contact = {0.51625, 0.152479, 10.0};
+  s.stiffness_ratio = 0.8;
+  return s;
+}
+
 Expected<Eigen::Vector3d> hitNormal(const Eigen::Vector3d& axis_point, const Eigen::Vector3d& direction,
                                     const Eigen::Vector3d& ball_centre, double ball_radius)
 {

@@ -15,16 +15,8 @@ namespace
 /// The paper's massé inputs with the corrections of errata §5: m = 0.17 kg, r = 0.0286 m.
 bsp::CueStrike masse(const Eigen::Vector3d& cue_direction, double cue_eta2 = 7.0)
 {
-  bsp::CueStrike s;
-  s.cue_mass = 0.5018;
-  s.cue_direction = cue_direction;
-  s.cue_speed = 3.089095;
-  s.ball_mass = 0.17;
-  s.ball_radius = 0.0286;
-  s.hit_normal = {0.480151, -0.102889, 0.871131};
-  s.cue_contact = {0.656532, 0.7, cue_eta2};
-  s.table_contact = {0.51625, 0.152479, 10.0};
-  s.stiffness_ratio = 0.8;
+  bsp::CueStrike s = bsp::paperMasseStrike(cue_direction);
+  s.cue_contact.eta2 = cue_eta2;
   return s;
 }
 
