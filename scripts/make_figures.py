@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""Validation figures from the package's own output (impact_solve), beside the paper's printed values.
+
+Usage: make_figures.py IMPACT_SOLVE OUTPUT_DIR
+"""
+import json
+import math
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+M2 = 2 / math.sqrt(3)
+
+
+def solve(program, problem):
+    out = subprocess.run([program], input=json.dumps(problem), capture_output=True, text=True, check=True)
+    return json.loads(out.stdout)
+
+
+def ball_ball_table(program, m2, e1, e2):
+    return solve(program, {"problem": "ball_ball_table", "m2": m2, "stiffness_ratio": 1, "e1": e1, "e2": e2,
+                           "solver": {"record_samples": True}})
+
+
+def impulse_curve(ax, result, m2, title, printed=None):
+    i1 = [s["impulses"][0] for s in result["samples"]]
+    i2 = [s["impulses"][1] for s in result["samples"]]
+    ax.plot(i1, i2, color="tab:blue", label="impulse curve (this package)")
+    # Bounding ellipse (42): ½I1² + (I1−I2)²/(2m2) − I1 = 0, solved for I2.
+    xs = [2 * k / 400 for k in range(401)]
+    upper, lower = [], []
+    for x in xs:
+        r = 2 * m2 * (x - 0.5 * x * x)
+        r = math.sqrt(max(r, 0.0))
+        upper.append(x + r)
+        lower.append(x - r)
+    ax.plot(xs, upper, "k--", lw=0.8, label="bounding ellipse (42)")
+    ax.plot(xs, lower, "k--", lw=0.8)
+    # Compression lines: l1 (v1 = v2): I2 = (1 + m2) I1 − m2; l2 (v2 = 0): I2 = I1.
+    ax.plot(xs, [(1 + m2) * x - m2 for x in xs], color="tab:green", lw=0.8, label="l1: end of ball–ball compression")
+    ax.plot(xs, xs, color="tab:orange", lw=0.8, label="l2: end of ball–table compression")
+    markers = {"end_of_compression": "o", "restart_of_compression": "s", "separation": "x", "reactivation": "^"}
+    for e in result["events"]:
+        ax.plot(e["impulses"][0], e["impulses"][1], markers.get(e["type"], "."), color="tab:red", ms=6)
+    for k, s in enumerate(result["state_starts"]):
+        ax.annotate(s["state"], (s["impulses"][0], s["impulses"][1]), textcoords="offset points", xytext=(5, -12),
+                    fontsize=8)
+    if printed:
+        ax.plot(*printed, "*", color="purple", ms=10, label="paper's printed end point")
+    ax.plot([], [], "o", color="tab:red", label="end of compression")
+    ax.plot([], [], "s", color="tab:red", label="restart of compression")
+    ax.plot([], [], "x", color="tab:red", label="separation")
+    ax.plot([], [], "^", color="tab:red", label="reactivation")
+    ax.set_xlim(-0.05, 2.1)
+    ax.set_ylim(-0.3, 2.9)
+    ax.set_xlabel("I1 (ball–ball)")
+    ax.set_ylabel("I2 (ball–table)")
+    ax.set_title(title + "  states " + " ".join(result["states"]))
+    ax.legend(fontsize=7, loc="upper left")
+    ax.grid(alpha=0.3)
+
+
+def figure_impulse_curves(program, out):
+    cases = [("fig1_table1_impulse_curve.png", M2, 0.9, 0.7, "Fig. 1 / Table 1: e1 = 0.9, e2 = 0.7", (1.61377, 1.85565)),
+             ("fig7_elastic_impulse_curve.png", M2, 1.0, 1.0, "Fig. 7: elastic", (1.94484, 2.29559)),
+             ("fig9_restart_impulse_curve.png", 0.5, 0.9, 0.7, "Fig. 9: m2 = 0.5, restarts of compression", None)]
+    names = []
+    for name, m2, e1, e2, title, printed in cases:
+        fig, ax = plt.subplots(figsize=(7, 6))
+        impulse_curve(ax, ball_ball_table(program, m2, e1, e2), m2, title, printed)
+        fig.tight_layout()
+        fig.savefig(f"{out}/{name}", dpi=110)
+        plt.close(fig)
+        names.append(name)
+    return names
+
+
+def figure_8(program, out):
+    r = ball_ball_table(program, M2, 0.9, 0.7)
+    fig, (a, b) = plt.subplots(1, 2, figsize=(11, 5))
+    a.plot([s["velocities"][0] for s in r["samples"]], [s["velocities"][1] for s in r["samples"]])
+    a.plot(0.61377, 0.20947, "*", color="purple", ms=10, label="paper's printed final velocities")
+    a.plot(r["v1"], r["v2"], "o", color="tab:red", label="this package")
+    a.set_xlabel("v1 (upper ball)")
+    a.set_ylabel("v2 (lower ball)")
+    a.set_title("Fig. 8(a): velocities along the collision")
+    a.legend(fontsize=8)
+    a.grid(alpha=0.3)
+    b.plot([s["strain_energies"][0] for s in r["samples"]], [s["strain_energies"][1] for s in r["samples"]], ".",
+           ms=2)
+    b.set_xlabel("E1 (ball–ball spring)")
+    b.set_ylabel("E2 (ball–table spring)")
+    b.set_title("Fig. 8(b): strain energies (jumps at ends of compression)")
+    b.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(f"{out}/fig8_velocities_energies.png", dpi=110)
+    plt.close(fig)
+    return ["fig8_velocities_energies.png"]
+
+
+MASSE = {"problem": "shot", "ball_position": [0.0, 0.0], "cue_mass": 0.5018,
+         "cue_direction": [-0.2761, -0.1388, -0.9511], "cue_speed": 3.089095, "ball_mass": 0.17,
+         "ball_radius": 0.0286, "hit_normal": [0.480151, -0.102889, 0.871131],
+         "cue_contact": {"restitution": 0.656532, "friction": 0.7, "eta2": 7},
+         "table_contact": {"restitution": 0.51625, "friction": 0.152479, "eta2": 10}, "stiffness_ratio": 0.8,
+         "planar": True, "table": {"length": 40, "width": 40, "pockets": []}, "sample_spacing": 0.02}
+
+
+def planar_path(program, v, w):
+    r = solve(program, {"problem": "ball_motion", "position": [0, 0], "v": v, "omega": w, "ball_radius": 0.0286,
+                        "planar": True, "table": {"length": 40, "width": 40, "pockets": []}, "sample_spacing": 0.02})
+    return [s["position"][0] for s in r["samples"]], [s["position"][1] for s in r["samples"]]
+
+
+def figure_masse(program, out):
+    fig, (a, b) = plt.subplots(1, 2, figsize=(12, 5.5))
+    shot = solve(program, MASSE)["trajectory"]
+    a.plot([s["position"][0] for s in shot["samples"]], [s["position"][1] for s in shot["samples"]],
+           label="this package (literal cue direction)")
+    a.plot(*planar_path(program, [-1.67629, -0.075349, 0.637937], [40.3064, 83.6145, -15.4927]), "--",
+           label="from the paper's prediction (57)")
+    a.plot(*planar_path(program, [-1.67063, -0.274431, 0], [28.4584, 79.1561, 0]), ":",
+           label="from the measurement (56)")
+    a.set_aspect("auto")
+    a.set_xlabel("x (m)")
+    a.set_ylabel("y (m)")
+    a.set_title("Massé shot of §9.2: planar paths from (0, 0)")
+    a.legend(fontsize=8)
+    a.grid(alpha=0.3)
+    for eta2 in range(2, 8):
+        problem = dict(MASSE)
+        problem["cue_contact"] = dict(MASSE["cue_contact"], eta2=eta2)
+        t = solve(program, problem)["trajectory"]
+        b.plot([s["position"][0] for s in t["samples"]], [s["position"][1] for s in t["samples"]],
+               label=f"η² (cue–ball) = {eta2}")
+    b.set_aspect("auto")
+    b.set_xlabel("x (m)")
+    b.set_ylabel("y (m)")
+    b.set_title("Fig. 16(d): paths for η² from 2 to 7")
+    b.legend(fontsize=8)
+    b.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(f"{out}/masse_paths.png", dpi=110)
+    plt.close(fig)
+    return ["masse_paths.png"]
+
+
+def main():
+    program, out = sys.argv[1], sys.argv[2]
+    names = figure_impulse_curves(program, out) + figure_8(program, out) + figure_masse(program, out)
+    for n in names:
+        print(f"{out}/{n}")
+
+
+if __name__ == "__main__":
+    main()
