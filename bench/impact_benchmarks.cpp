@@ -7,6 +7,7 @@
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
 #include "billiard_shot_planner/scenarios/ball_chain.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
+#include "paper_impulse_method.hpp"
 
 namespace bsp = billiard_shot_planner;
 
@@ -103,8 +104,23 @@ void BM_TrajectoryThreeCushions(benchmark::State& state)
   }
   state.counters["cushion_hits"] = hits;
 }
+/// The paper's fixed-step impulse method on Table 1; argument: −log10 of the impulse step. Error against the
+/// converged values of ../shared/spec/paper_errata.md (v1 = 0.6139494, v2 = 0.2097195).
+void BM_Table1PaperMethod(benchmark::State& state)
+{
+  const double step = std::pow(10.0, -static_cast<double>(state.range(0)));
+  paper_method::Result result{};
+  for (auto _ : state)
+  {
+    result = paper_method::solve(1.0, 2.0 / std::sqrt(3.0), 1.0, 0.9, 0.7, -1.0, step);
+    benchmark::DoNotOptimize(result);
+  }
+  state.counters["velocity_error"] = std::max(std::abs(result.v1 - 0.6139494), std::abs(result.v2 - 0.2097195));
+  state.counters["steps"] = static_cast<double>(result.steps);
+}
 }  // namespace
 
+BENCHMARK(BM_Table1PaperMethod)->Arg(3)->Arg(4)->Arg(5)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_TrajectoryThreeCushions)->Unit(benchmark::kMicrosecond);
 
 // Argument: −log10 of the relative tolerance (12 is the default). velocity_error: against 100× tighter.
