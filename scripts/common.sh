@@ -18,7 +18,7 @@ PACKAGES=(
   libeigen3-dev libboost-dev nlohmann-json3-dev libyaml-cpp-dev
   libgtest-dev libbenchmark-dev
   rviz xvfb xauth libgl1-mesa-dri imagemagick python3-pil
-  clang-format catkin-lint
+  clang-format clang-tidy catkin-lint
 )
 
 log() { printf '\n\033[1m== %s\033[0m\n' "$*"; }

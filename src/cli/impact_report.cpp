@@ -4,6 +4,7 @@
 // ../shared/spec/paper_errata.md; then the massé cue strike of §9.2 beside the paper's prediction and measurement.
 #include <cmath>
 #include <cstdio>
+#include <exception>
 
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
@@ -104,6 +105,7 @@ bool reportMasse()
 }  // namespace
 
 int main()
+try
 {
   const double m2 = 2.0 / std::sqrt(3.0);
   const Example examples[] = {
@@ -125,4 +127,9 @@ int main()
     ok = report(example) && ok;
   ok = reportMasse() && ok;
   return ok ? 0 : 1;
+}
+catch (const std::exception& e)
+{
+  std::fprintf(stderr, "impact_report: %s\n", e.what());
+  return 1;
 }

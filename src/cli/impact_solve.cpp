@@ -6,7 +6,9 @@
 
 #include "billiard_shot_planner/io/json_problems.hpp"
 
-int main()
+namespace
+{
+int run()
 {
   using billiard_shot_planner::ErrorCode;
   const std::string text((std::istreambuf_iterator<char>(std::cin)), std::istreambuf_iterator<char>());
@@ -27,4 +29,18 @@ int main()
   }
   std::cout << result.value().dump(2) << "\n";
   return 0;
+}
+}  // namespace
+
+int main()
+{
+  try
+  {
+    return run();
+  }
+  catch (const std::exception& e)  // e.g. output that cannot be encoded; the library itself does not throw
+  {
+    std::cerr << "impact_solve: " << e.what() << "\n";
+    return 1;
+  }
 }

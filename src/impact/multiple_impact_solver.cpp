@@ -43,7 +43,7 @@ public:
         space_(buildContactSpace(problem)),
         contacts_(initialContactStates(problem, space_)),
         dynamics_(space_, contacts_),
-        y_(2 * space_.size, 0.0),
+        y_(static_cast<std::size_t>(2 * space_.size), 0.0),
         buffer_(y_.size())
   {
     result_.initial_kinetic_energy = kineticEnergy(problem.velocity);

@@ -112,6 +112,7 @@ std::vector<TrajectorySample> BallTrajectory::sample(double spacing) const
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
   std::vector<TrajectorySample> samples;
+  samples.reserve(times.size());
   for (double t : times)
     samples.push_back({t, at(t), phaseAt(t)});
   return samples;

@@ -22,7 +22,7 @@ Status check(const BallBallTable& c)
   return {};
 }
 
-Contact frictionless(const char* name, Eigen::RowVector2d normal, double restitution, double stiffness)
+Contact frictionless(const char* name, const Eigen::RowVector2d& normal, double restitution, double stiffness)
 {
   Contact contact;
   contact.name = name;
