@@ -18,7 +18,10 @@ DESCRIPTIONS = {
 
 def main():
     results, roundtrip, output = sys.argv[1:4]
-    data = json.load(open(results))
+    try:
+        data = json.load(open(results))
+    except (OSError, ValueError):
+        data = {"benchmarks": []}  # e.g. a run filtered to no benchmark
     rows = []
     for b in data["benchmarks"]:
         if b.get("aggregate_name") != "median":
