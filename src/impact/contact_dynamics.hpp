@@ -30,8 +30,6 @@ public:
 
   Eigen::VectorXd relativeVelocity(const double* y) const;
   Eigen::VectorXd forces(const double* y) const;
-  /// dw/dt = W F: the relative acceleration, used to decide grazing activations.
-  Eigen::VectorXd relativeAcceleration(const double* y) const { return space_.delassus * forces(y); }
   /// Normal plus tangential strain energy of contact i (dimensionless).
   double strainEnergy(std::size_t contact, const double* y) const;
   /// Sliding speed σ = ŝ·v_t + μη²v_n of a slipping contact's particle (spec §2.6).

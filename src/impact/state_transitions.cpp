@@ -303,10 +303,11 @@ void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vecto
       continue;
     const Eigen::Vector2d j_t = jerk.segment<2>(row + 1);
     const double bound = contacts[i].friction * contacts[i].eta2() * std::abs(jerk(row));
-    if (j_t.norm() > bound * (1.0 + 1e-12) + VELOCITY_TOLERANCE * jerk.norm())
-      contacts[i].slip_direction = j_t.normalized();
     contacts[i].slipping = j_t.norm() > bound * (1.0 + 1e-12) + VELOCITY_TOLERANCE * jerk.norm();
+    if (contacts[i].slipping)
+      contacts[i].slip_direction = j_t.normalized();
   }
+  // Every contact that starts slipping (here, or the cue tip by its velocity) gets its direction carrier.
   for (std::size_t i = 0; i < contacts.size(); ++i)
     if (contacts[i].active() && contacts[i].slipping)
       startSlip(contacts[i], contacts[i].slip_direction, y.data(), space, i);

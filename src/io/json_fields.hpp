@@ -54,8 +54,14 @@ Expected<json> solveBallTable(const json& request, const SolverOptions& options)
 Expected<json> solveBallMotion(const json& request, const SolverOptions& options);
 Expected<json> solveShot(const json& request, const SolverOptions& options);
 
-/// The cue strike fields of a request (json_strike.cpp), and its result as JSON.
+/// The cue strike fields of a request (json_strike.cpp), the strike solved, and its result as JSON.
 Expected<CueStrike> cueStrikeFromJson(const json& request);
+struct StrikeAnswer
+{
+  CueStrike strike;
+  CueStrikeResult result;
+};
+Expected<StrikeAnswer> solveStrikeFromJson(const json& request, const SolverOptions& options);
 json cueStrikeJson(const CueStrikeResult& result);
 
 }  // namespace json_io

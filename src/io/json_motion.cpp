@@ -225,23 +225,21 @@ Expected<json> solveBallMotion(const json& request, const SolverOptions& options
 
 Expected<json> solveShot(const json& request, const SolverOptions& options)
 {
-  auto strike = cueStrikeFromJson(request);
-  if (!strike)
-    return strike.error();
-  auto result = solve(strike.value(), options);
-  if (!result)
-    return result.error();
-  const CueStrike& s = strike.value();
+  auto answer = solveStrikeFromJson(request, options);
+  if (!answer)
+    return answer.error();
+  const CueStrike& s = answer.value().strike;
+  const CueStrikeResult& result = answer.value().result;
   auto setup = motionSetup(request, options, &s.table_contact, Ball{s.ball_mass, s.ball_radius});
   if (!setup)
     return setup.error();
   auto position = vector2(request, "ball_position");
   if (!position)
     return position.error();
-  auto trajectory = predict(setup.value(), position.value(), result.value().velocity, result.value().angular_velocity);
+  auto trajectory = predict(setup.value(), position.value(), result.velocity, result.angular_velocity);
   if (!trajectory)
     return trajectory.error();
-  return json{{"strike", cueStrikeJson(result.value())}, {"trajectory", trajectory.value()}};
+  return json{{"strike", cueStrikeJson(result)}, {"trajectory", trajectory.value()}};
 }
 
 }  // namespace json_io

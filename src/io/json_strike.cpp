@@ -91,7 +91,7 @@ json cueStrikeJson(const CueStrikeResult& r)
   return out;
 }
 
-Expected<json> solveCueStrike(const json& request, const SolverOptions& options)
+Expected<StrikeAnswer> solveStrikeFromJson(const json& request, const SolverOptions& options)
 {
   auto strike = cueStrikeFromJson(request);
   if (!strike)
@@ -99,7 +99,15 @@ Expected<json> solveCueStrike(const json& request, const SolverOptions& options)
   auto result = solve(strike.value(), options);
   if (!result)
     return result.error();
-  return cueStrikeJson(result.value());
+  return StrikeAnswer{std::move(strike).value(), std::move(result).value()};
+}
+
+Expected<json> solveCueStrike(const json& request, const SolverOptions& options)
+{
+  auto answer = solveStrikeFromJson(request, options);
+  if (!answer)
+    return answer.error();
+  return cueStrikeJson(answer.value().result);
 }
 
 Expected<json> solveBallTable(const json& request, const SolverOptions& options)

@@ -132,8 +132,6 @@ private:
                          table_.cushion,
                          table_.cloth,
                          table_.cushion_stiffness_ratio};
-    if (on_cloth)
-      impact.velocity.z() = 0.0;
     auto result = solve(impact, p_.impact);
     if (!result)
       return result.error();
