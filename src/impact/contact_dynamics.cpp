@@ -30,13 +30,21 @@ void ContactDynamics::refresh()
 
 Eigen::VectorXd ContactDynamics::relativeVelocity(const double* y) const
 {
-  return space_.w0 + space_.delassus * Eigen::Map<const Eigen::VectorXd>(y, space_.size);
+  Eigen::VectorXd velocity;
+  relativeVelocity(y, velocity);
+  return velocity;
 }
 
-Eigen::VectorXd ContactDynamics::springForces(const double* y) const
+void ContactDynamics::relativeVelocity(const double* y, Eigen::VectorXd& velocity) const
+{
+  velocity = space_.w0;
+  velocity.noalias() += space_.delassus * Eigen::Map<const Eigen::VectorXd>(y, space_.size);
+}
+
+void ContactDynamics::springForces(const double* y, Eigen::VectorXd& force) const
 {
   const double* s = y + space_.size;
-  Eigen::VectorXd force = Eigen::VectorXd::Zero(space_.size);
+  force.setZero(space_.size);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
     const ContactState& contact = contacts_[i];
@@ -52,14 +60,24 @@ Eigen::VectorXd ContactDynamics::springForces(const double* y) const
       // even where the spring shrinks to nothing at separation and its integrated length loses accuracy.
       force.segment<2>(row + 1) = -contact.friction * force(row) * springDirection(i, y);
   }
-  return force;
 }
 
 Eigen::VectorXd ContactDynamics::forces(const double* y) const
 {
-  Eigen::VectorXd force = springForces(y);
-  if (rigid_contacts_.empty())
-    return force;
+  Eigen::VectorXd force;
+  forces(y, force);
+  return force;
+}
+
+void ContactDynamics::forces(const double* y, Eigen::VectorXd& force) const
+{
+  springForces(y, force);
+  if (!rigid_contacts_.empty())
+    addLinkForces(y, force);
+}
+
+void ContactDynamics::addLinkForces(const double* y, Eigen::VectorXd& force) const
+{
   // Rigid links: unknown normal forces f keep their normal velocities constant (zero), (W F)_n = 0. A sliding
   // link's friction, −μ f ŝ, depends on its own unknown, so each link contributes a column B_r of F = F_s + B f.
   const auto links = static_cast<Eigen::Index>(rigid_contacts_.size());
@@ -78,7 +96,7 @@ Eigen::VectorXd ContactDynamics::forces(const double* y) const
   // Redundant links (a singular system) get the least-norm forces.
   const Eigen::VectorXd link_forces =
       (normal_rows * basis).completeOrthogonalDecomposition().solve(-(normal_rows * force));
-  return force + basis * link_forces;
+  force += basis * link_forces;
 }
 
 double ContactDynamics::strainEnergy(std::size_t contact, const double* y) const
@@ -147,12 +165,12 @@ void ContactDynamics::springRates(std::size_t contact, const double* y, const Ei
 
 void ContactDynamics::operator()(const OdeState& y, OdeState& dydt, double /*t*/) const
 {
-  const Eigen::VectorXd w = relativeVelocity(y.data());
-  const Eigen::VectorXd force = forces(y.data());
+  relativeVelocity(y.data(), velocity_scratch_);
+  forces(y.data(), force_scratch_);
   for (int r = 0; r < space_.size; ++r)
-    dydt[r] = force(r);
+    dydt[r] = force_scratch_(r);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
-    springRates(i, y.data(), w, force, dydt.data() + space_.size + space_.offset[i]);
+    springRates(i, y.data(), velocity_scratch_, force_scratch_, dydt.data() + space_.size + space_.offset[i]);
 }
 
 }  // namespace detail

@@ -30,6 +30,9 @@ public:
 
   Eigen::VectorXd relativeVelocity(const double* y) const;
   Eigen::VectorXd forces(const double* y) const;
+  /// The same into existing vectors (no allocation once they have the size: guards are sampled very often).
+  void relativeVelocity(const double* y, Eigen::VectorXd& velocity) const;
+  void forces(const double* y, Eigen::VectorXd& force) const;
   /// Normal plus tangential strain energy of contact i (dimensionless).
   double strainEnergy(std::size_t contact, const double* y) const;
   /// Sliding speed σ = ŝ·v_t + μη²v_n of a slipping contact's particle (spec §2.6).
@@ -44,11 +47,14 @@ private:
   void springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w, const Eigen::VectorXd& force,
                    double* rates) const;
   /// Forces of the springs alone (rigid-link normals and sliding-link friction left at zero).
-  Eigen::VectorXd springForces(const double* y) const;
+  void springForces(const double* y, Eigen::VectorXd& force) const;
+  void addLinkForces(const double* y, Eigen::VectorXd& force) const;
 
   const ContactSpace& space_;
   const std::vector<ContactState>& contacts_;
   std::vector<std::size_t> rigid_contacts_;
+  mutable Eigen::VectorXd velocity_scratch_;  ///< for operator(), called by the integrator
+  mutable Eigen::VectorXd force_scratch_;
 };
 
 }  // namespace detail

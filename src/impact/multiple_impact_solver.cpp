@@ -7,6 +7,7 @@
 
 #include "contact_dynamics.hpp"
 #include "contact_space.hpp"
+#include "linear_phase.hpp"
 #include "state_transitions.hpp"
 
 namespace billiard_shot_planner
@@ -23,6 +24,12 @@ using DenseStepper = odeint::bulirsch_stoer_dense_out<OdeState>;
 /// Guard samples per integrator step: with steps bounded by a fraction of the fastest contact period this
 /// catches transitions that fire and reset within one step.
 constexpr int SAMPLES_PER_STEP = 4;
+
+/// Closed-form steps, in radians of the fastest mode: the guards are sums of sines of at most that frequency, so
+/// with SAMPLES_PER_STEP samples a step sees any crossing pair more than a quarter radian apart. Finer when the
+/// impulse curve is recorded for plots.
+constexpr double RADIANS_PER_CLOSED_FORM_STEP = 1.0;
+constexpr double RADIANS_PER_RECORDED_STEP = 0.125;
 
 /// Zero-time transitions one contact may make at one instant (see ImpactSolver::settle).
 constexpr int MAX_SWITCHES_PER_INSTANT = 6;
@@ -166,12 +173,26 @@ private:
     return std::sqrt(std::max(trace, std::numeric_limits<double>::min()));
   }
 
+  /// Integrates to the next transition: in closed form where no active contact slides (the dynamics is linear),
+  /// otherwise with Bulirsch–Stoer.
   Expected<bool> advanceToNextEvent()
   {
+    if (options_.closed_form_linear_phases && LinearPhaseStepper::applies(contacts_, space_))
+    {
+      LinearPhaseStepper stepper(space_, contacts_, y_, t_,
+                                 options_.record_samples ? RADIANS_PER_RECORDED_STEP : RADIANS_PER_CLOSED_FORM_STEP);
+      return advanceWith(stepper);
+    }
     const double omega = fastestFrequency();
     DenseStepper stepper(options_.absolute_tolerance, options_.relative_tolerance, 1.0, 1.0, 0.5 / omega,
                          /*control_interpolation=*/true);
     stepper.initialize(y_, t_, 0.01 / omega);
+    return advanceWith(stepper);
+  }
+
+  template <class Stepper>
+  Expected<bool> advanceWith(Stepper& stepper)
+  {
     std::vector<Guard> guards = armedGuards(contacts_, space_);
     while (true)
     {
@@ -198,7 +219,8 @@ private:
   }
 
   /// Points of the impulse curve in (t0, t1], evenly spaced within the step, for plots.
-  void recordSamples(const DenseStepper& stepper, double t0, double t1)
+  template <class Stepper>
+  void recordSamples(const Stepper& stepper, double t0, double t1)
   {
     if (!options_.record_samples)
       return;
@@ -210,23 +232,26 @@ private:
     }
   }
 
-  double guardAt(const DenseStepper& stepper, const Guard& guard, double t) const
+  template <class Stepper>
+  double guardAt(const Stepper& stepper, const Guard& guard, double t) const
   {
     stepper.calc_state(t, buffer_);
-    return guardValue(guard, evaluateKinematics(dynamics_, buffer_.data()), contacts_, dynamics_, space_);
+    evaluateKinematics(dynamics_, buffer_.data(), kinematics_buffer_);
+    return guardValue(guard, kinematics_buffer_, contacts_, dynamics_, space_);
   }
 
   /// Values of every guard at evenly spaced instants of the step (one state evaluation per instant).
-  Eigen::MatrixXd sampleGuards(const DenseStepper& stepper, const std::vector<Guard>& guards, double t0,
-                               double t1) const
+  template <class Stepper>
+  Eigen::MatrixXd sampleGuards(const Stepper& stepper, const std::vector<Guard>& guards, double t0, double t1) const
   {
     Eigen::MatrixXd values(SAMPLES_PER_STEP + 1, static_cast<Eigen::Index>(guards.size()));
     for (int k = 0; k <= SAMPLES_PER_STEP; ++k)
     {
       stepper.calc_state(sampleTime(t0, t1, k), buffer_);
-      const Kinematics kinematics = evaluateKinematics(dynamics_, buffer_.data());
+      evaluateKinematics(dynamics_, buffer_.data(), kinematics_buffer_);
       for (std::size_t g = 0; g < guards.size(); ++g)
-        values(k, static_cast<Eigen::Index>(g)) = guardValue(guards[g], kinematics, contacts_, dynamics_, space_);
+        values(k, static_cast<Eigen::Index>(g)) =
+            guardValue(guards[g], kinematics_buffer_, contacts_, dynamics_, space_);
     }
     return values;
   }
@@ -237,7 +262,8 @@ private:
   }
 
   /// The earliest guard to rise through zero in [t0, t1], with every other one within round-off of it.
-  std::vector<FiredGuard> firedGuards(const DenseStepper& stepper, const std::vector<Guard>& guards, double t0,
+  template <class Stepper>
+  std::vector<FiredGuard> firedGuards(const Stepper& stepper, const std::vector<Guard>& guards, double t0,
                                       double t1) const
   {
     const Eigen::MatrixXd values = sampleGuards(stepper, guards, t0, t1);
@@ -270,7 +296,8 @@ private:
   }
 
   /// The instant just after the guard's zero (so that the transition has numerically happened).
-  double locateRoot(const DenseStepper& stepper, const Guard& guard, double a, double b, double ga, double gb) const
+  template <class Stepper>
+  double locateRoot(const Stepper& stepper, const Guard& guard, double a, double b, double ga, double gb) const
   {
     if (ga == 0.0)
       return a;
@@ -310,6 +337,7 @@ private:
   ChatterLimit chatter_{};
   OdeState y_;
   mutable OdeState buffer_;  ///< scratch state for dense-output evaluations
+  mutable Kinematics kinematics_buffer_{};
   double t_ = 0.0;
   std::size_t event_count_ = 0;
   std::size_t step_count_ = 0;

@@ -134,7 +134,16 @@ std::vector<ContactEventType> activate(std::size_t index, const Kinematics& kine
 
 Kinematics evaluateKinematics(const ContactDynamics& dynamics, const double* y)
 {
-  return Kinematics{y, dynamics.relativeVelocity(y), dynamics.forces(y)};
+  Kinematics kinematics{};
+  evaluateKinematics(dynamics, y, kinematics);
+  return kinematics;
+}
+
+void evaluateKinematics(const ContactDynamics& dynamics, const double* y, Kinematics& kinematics)
+{
+  kinematics.y = y;
+  dynamics.relativeVelocity(y, kinematics.velocity);
+  dynamics.forces(y, kinematics.force);
 }
 
 std::vector<Guard> armedGuards(const std::vector<ContactState>& contacts, const ContactSpace& space)

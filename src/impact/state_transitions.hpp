@@ -30,6 +30,8 @@ struct Kinematics
 };
 
 Kinematics evaluateKinematics(const ContactDynamics& dynamics, const double* y);
+/// The same into an existing Kinematics, reusing its vectors.
+void evaluateKinematics(const ContactDynamics& dynamics, const double* y, Kinematics& kinematics);
 
 /// Guards armed by the current discrete state.
 std::vector<Guard> armedGuards(const std::vector<ContactState>& contacts, const ContactSpace& space);

@@ -19,6 +19,9 @@ struct SolverOptions
   std::size_t max_events = 200000;  ///< bound on contact events; beyond it the solve fails (never hangs)
   std::size_t max_steps = 5000000;  ///< bound on integrator steps
   bool record_samples = false;      ///< keep the impulse curve and energies at every integrator step
+  /// Solve states in which no active contact slides (frictionless or sticking contacts: linear spring dynamics) in
+  /// closed form, exact to round-off; off, every state is integrated numerically (for cross-checks).
+  bool closed_form_linear_phases = true;
 };
 
 }  // namespace billiard_shot_planner

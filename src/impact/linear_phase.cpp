@@ -1,0 +1,140 @@
+#include "linear_phase.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+#include <cmath>
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+namespace
+{
+/// Below this phase ωτ the sines are evaluated by their series: sin(ωτ)/ω and (1 − cos ωτ)/ω² lose all digits
+/// to cancellation as ω → 0 (modes of a singular Delassus matrix, which move linearly).
+constexpr double SERIES_PHASE = 1e-3;
+
+/// Position and time integral of one oscillator ẍ = −ω²x with x(0) = a, ẋ(0) = b, at time τ.
+std::pair<double, double> oscillator(double a, double b, double omega, double tau)
+{
+  const double phase = omega * tau;
+  double sin_over_omega, one_minus_cos_over_omega2;
+  if (phase < SERIES_PHASE)
+  {
+    const double p2 = phase * phase;
+    sin_over_omega = tau * (1.0 - p2 / 6.0 * (1.0 - p2 / 20.0));
+    one_minus_cos_over_omega2 = tau * tau * (0.5 - p2 / 24.0 * (1.0 - p2 / 30.0));
+  }
+  else
+  {
+    sin_over_omega = std::sin(phase) / omega;
+    one_minus_cos_over_omega2 = (1.0 - std::cos(phase)) / (omega * omega);
+  }
+  const double cos_phase = 1.0 - omega * omega * one_minus_cos_over_omega2;
+  return {a * cos_phase + b * sin_over_omega, a * sin_over_omega + b * one_minus_cos_over_omega2};
+}
+}  // namespace
+
+bool LinearPhaseStepper::applies(const std::vector<ContactState>& contacts, const ContactSpace& space)
+{
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    if (contacts[i].active() && space.dim[i] == 3 && contacts[i].slipping)
+      return false;
+  return true;
+}
+
+LinearPhaseStepper::LinearPhaseStepper(const ContactSpace& space, const std::vector<ContactState>& contacts,
+                                       const OdeState& y0, double t0, double radians_per_step)
+    : y0_(y0), t0_(t0), t_(t0)
+{
+  const Eigen::Index n = space.size;
+  std::vector<double> stiffness;
+  std::vector<int> link_rows;
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+  {
+    const ContactState& contact = contacts[i];
+    const int row = space.offset[i];
+    if (!contact.active())
+      continue;
+    if (contact.compliant())
+    {
+      moving_rows_.push_back(row);
+      stiffness.push_back(contact.stiffness);
+    }
+    if (contact.phase == NormalPhase::RigidLink)
+      link_rows.push_back(row);
+    if (space.dim[i] == 3)
+      for (int k = 1; k <= 2; ++k)
+      {
+        moving_rows_.push_back(row + k);
+        stiffness.push_back(contact.kappa);
+      }
+  }
+  // Rigid links: F = Π F_s with Π = 1 − B W_LL⁺ W_L (the link forces keep their normal velocities at zero, as in
+  // ContactDynamics::forces). W Π is then the Schur complement of the links in W, symmetric.
+  Eigen::MatrixXd projection = Eigen::MatrixXd::Identity(n, n);
+  if (!link_rows.empty())
+  {
+    const auto links = static_cast<Eigen::Index>(link_rows.size());
+    Eigen::MatrixXd link_delassus_rows(links, n);
+    for (Eigen::Index l = 0; l < links; ++l)
+      link_delassus_rows.row(l) = space.delassus.row(link_rows[l]);
+    Eigen::MatrixXd link_block(links, links);
+    for (Eigen::Index l = 0; l < links; ++l)
+      link_block.col(l) = link_delassus_rows.col(link_rows[l]);
+    const Eigen::MatrixXd link_forces =
+        link_block.completeOrthogonalDecomposition().pseudoInverse() * link_delassus_rows;
+    for (Eigen::Index l = 0; l < links; ++l)
+      projection.row(link_rows[l]) -= link_forces.row(l);
+  }
+  const auto r = static_cast<Eigen::Index>(moving_rows_.size());
+  Eigen::VectorXd sqrt_k(r);
+  Eigen::MatrixXd reduced(r, r);       // (W Π)_RR
+  Eigen::MatrixXd force_from_s(n, r);  // G = Π E_R (−K)
+  const Eigen::MatrixXd reduced_delassus = space.delassus * projection;
+  for (Eigen::Index a = 0; a < r; ++a)
+  {
+    sqrt_k(a) = std::sqrt(stiffness[a]);
+    force_from_s.col(a) = -stiffness[a] * projection.col(moving_rows_[a]);
+    for (Eigen::Index b = 0; b < r; ++b)
+      reduced(a, b) = reduced_delassus(moving_rows_[a], moving_rows_[b]);
+  }
+  const Eigen::MatrixXd symmetric = sqrt_k.asDiagonal() * (0.5 * (reduced + reduced.transpose())) * sqrt_k.asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> modes(symmetric);
+  omega_ = modes.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  spring_from_modes_ = sqrt_k.cwiseInverse().asDiagonal() * modes.eigenvectors();
+  impulse_from_modes_ = force_from_s * spring_from_modes_;
+
+  const Eigen::Map<const Eigen::VectorXd> impulses(y0.data(), n);
+  const Eigen::VectorXd velocity = space.w0 + space.delassus * impulses;
+  Eigen::VectorXd z(r), z_rate(r);
+  for (Eigen::Index a = 0; a < r; ++a)
+  {
+    z(a) = sqrt_k(a) * y0[static_cast<std::size_t>(n + moving_rows_[a])];
+    z_rate(a) = sqrt_k(a) * velocity(moving_rows_[a]);
+  }
+  modal_position_ = modes.eigenvectors().transpose() * z;
+  modal_velocity_ = modes.eigenvectors().transpose() * z_rate;
+  position_.resize(r);
+  integral_.resize(r);
+  springs_.resize(r);
+  const double fastest = r > 0 ? omega_.maxCoeff() : 0.0;
+  step_ = radians_per_step / (fastest > 0.0 ? fastest : 1.0);
+}
+
+void LinearPhaseStepper::calc_state(double t, OdeState& y) const
+{
+  const double tau = t - t0_;
+  const Eigen::Index r = omega_.size();
+  for (Eigen::Index j = 0; j < r; ++j)
+    std::tie(position_(j), integral_(j)) = oscillator(modal_position_(j), modal_velocity_(j), omega_(j), tau);
+  y = y0_;
+  const Eigen::Index n = impulse_from_modes_.rows();
+  Eigen::Map<Eigen::VectorXd>(y.data(), n).noalias() += impulse_from_modes_ * integral_;
+  springs_.noalias() = spring_from_modes_ * position_;
+  for (Eigen::Index a = 0; a < r; ++a)
+    y[static_cast<std::size_t>(n + moving_rows_[a])] = springs_(a);
+}
+
+}  // namespace detail
+}  // namespace billiard_shot_planner

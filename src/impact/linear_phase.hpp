@@ -1,0 +1,57 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <utility>
+#include <vector>
+
+#include "contact_dynamics.hpp"
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+/// Closed-form spring dynamics for a discrete state in which no active contact slides.
+///
+/// Then every force is linear in the spring lengths (F = −k s_n, −κ s_t, and rigid-link forces that keep their
+/// normal velocities at zero), so the moving springs obey s̈ = −S K s with S the Delassus matrix reduced by the
+/// rigid links (a Schur complement, symmetric positive semi-definite). In z = K^{1/2} s this is a set of
+/// independent oscillators; the state at any instant is a sum of sines and cosines, exact to round-off. It replaces
+/// the numerical integrator in these states (frictionless contacts, sticking contacts), with the same interface as
+/// Odeint's dense-output steppers so that the guards and the root finding stay the same.
+class LinearPhaseStepper
+{
+public:
+  /// Whether the dynamics of this discrete state is linear: no active frictional contact is sliding.
+  static bool applies(const std::vector<ContactState>& contacts, const ContactSpace& space);
+
+  /// Steps span `radians_per_step` of the fastest mode's phase.
+  LinearPhaseStepper(const ContactSpace& space, const std::vector<ContactState>& contacts, const OdeState& y0,
+                     double t0, double radians_per_step);
+
+  /// Advances by a fixed step: a fraction of the fastest period, so that guard sampling sees every crossing.
+  template <class System>
+  std::pair<double, double> do_step(System&& /*dynamics*/)
+  {
+    const double start = t_;
+    t_ += step_;
+    return {start, t_};
+  }
+
+  void calc_state(double t, OdeState& y) const;
+
+private:
+  OdeState y0_;
+  double t0_;
+  double t_;
+  double step_;
+  std::vector<int> moving_rows_;    ///< rows of s that change (compliant normals, sticking tangentials)
+  Eigen::VectorXd omega_;           ///< modal angular frequencies
+  Eigen::VectorXd modal_position_;  ///< modal coordinates at t0
+  Eigen::VectorXd modal_velocity_;
+  Eigen::MatrixXd spring_from_modes_;                      ///< s_R = K^{-1/2} Q p
+  Eigen::MatrixXd impulse_from_modes_;                     ///< I − I0 = G K^{-1/2} Q ∫p
+  mutable Eigen::VectorXd position_, integral_, springs_;  ///< scratch of calc_state (called very often)
+};
+
+}  // namespace detail
+}  // namespace billiard_shot_planner
