@@ -38,7 +38,7 @@ Eigen::VectorXd ContactDynamics::relativeVelocity(const double* y) const
 void ContactDynamics::relativeVelocity(const double* y, Eigen::VectorXd& velocity) const
 {
   velocity = space_.w0;
-  velocity.noalias() += space_.delassus * Eigen::Map<const Eigen::VectorXd>(y, space_.size);
+  velocity.noalias() += space_.delassus.lazyProduct(Eigen::Map<const Eigen::VectorXd>(y, space_.size));
 }
 
 void ContactDynamics::springForces(const double* y, Eigen::VectorXd& force) const

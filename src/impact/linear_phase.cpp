@@ -72,7 +72,8 @@ LinearPhaseStepper::LinearPhaseStepper(const ContactSpace& space, const std::vec
   }
   // Rigid links: F = Π F_s with Π = 1 − B W_LL⁺ W_L (the link forces keep their normal velocities at zero, as in
   // ContactDynamics::forces). W Π is then the Schur complement of the links in W, symmetric.
-  Eigen::MatrixXd projection = Eigen::MatrixXd::Identity(n, n);
+  Eigen::MatrixXd projection;
+  Eigen::MatrixXd reduced_delassus;
   if (!link_rows.empty())
   {
     const auto links = static_cast<Eigen::Index>(link_rows.size());
@@ -84,20 +85,26 @@ LinearPhaseStepper::LinearPhaseStepper(const ContactSpace& space, const std::vec
       link_block.col(l) = link_delassus_rows.col(link_rows[l]);
     const Eigen::MatrixXd link_forces =
         link_block.completeOrthogonalDecomposition().pseudoInverse() * link_delassus_rows;
+    projection = Eigen::MatrixXd::Identity(n, n);
     for (Eigen::Index l = 0; l < links; ++l)
       projection.row(link_rows[l]) -= link_forces.row(l);
+    reduced_delassus = space.delassus * projection;
   }
+  const bool linked = !link_rows.empty();
+  const Eigen::MatrixXd& delassus = linked ? reduced_delassus : space.delassus;
   const auto r = static_cast<Eigen::Index>(moving_rows_.size());
   Eigen::VectorXd sqrt_k(r);
   Eigen::MatrixXd reduced(r, r);       // (W Π)_RR
   Eigen::MatrixXd force_from_s(n, r);  // G = Π E_R (−K)
-  const Eigen::MatrixXd reduced_delassus = space.delassus * projection;
   for (Eigen::Index a = 0; a < r; ++a)
   {
     sqrt_k(a) = std::sqrt(stiffness[a]);
-    force_from_s.col(a) = -stiffness[a] * projection.col(moving_rows_[a]);
+    if (linked)
+      force_from_s.col(a) = -stiffness[a] * projection.col(moving_rows_[a]);
+    else
+      force_from_s.col(a) = -stiffness[a] * Eigen::VectorXd::Unit(n, moving_rows_[a]);
     for (Eigen::Index b = 0; b < r; ++b)
-      reduced(a, b) = reduced_delassus(moving_rows_[a], moving_rows_[b]);
+      reduced(a, b) = delassus(moving_rows_[a], moving_rows_[b]);
   }
   const Eigen::MatrixXd symmetric = sqrt_k.asDiagonal() * (0.5 * (reduced + reduced.transpose())) * sqrt_k.asDiagonal();
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> modes(symmetric);
@@ -130,8 +137,9 @@ void LinearPhaseStepper::calc_state(double t, OdeState& y) const
     std::tie(position_(j), integral_(j)) = oscillator(modal_position_(j), modal_velocity_(j), omega_(j), tau);
   y = y0_;
   const Eigen::Index n = impulse_from_modes_.rows();
-  Eigen::Map<Eigen::VectorXd>(y.data(), n).noalias() += impulse_from_modes_ * integral_;
-  springs_.noalias() = spring_from_modes_ * position_;
+  // Coefficient-wise products: the matrices are tiny, where Eigen's blocked kernels cost more than they save.
+  Eigen::Map<Eigen::VectorXd>(y.data(), n).noalias() += impulse_from_modes_.lazyProduct(integral_);
+  springs_.noalias() = spring_from_modes_.lazyProduct(position_);
   for (Eigen::Index a = 0; a < r; ++a)
     y[static_cast<std::size_t>(n + moving_rows_[a])] = springs_(a);
 }

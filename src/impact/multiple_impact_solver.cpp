@@ -194,16 +194,21 @@ private:
   Expected<bool> advanceWith(Stepper& stepper)
   {
     std::vector<Guard> guards = armedGuards(contacts_, space_);
+    guard_values_.resize(SAMPLES_PER_STEP + 1, static_cast<Eigen::Index>(guards.size()));
+    bool first_row_known = false;  // a step's first sample is the previous step's last
     while (true)
     {
       if (++step_count_ > options_.max_steps)
         return Error{ErrorCode::StepLimitExceeded, "",
                      "the impact did not end within " + std::to_string(options_.max_steps) + " integrator steps"};
       const auto [t0, t1] = stepper.do_step(std::cref(dynamics_));
+      sampleGuards(stepper, guards, t0, t1, first_row_known);
       std::vector<FiredGuard> fired = firedGuards(stepper, guards, t0, t1);
       if (fired.empty())
       {
         recordSamples(stepper, t0, t1);
+        guard_values_.row(0) = guard_values_.row(SAMPLES_PER_STEP);
+        first_row_known = true;
         continue;
       }
       recordSamples(stepper, t0, fired.front().time);
@@ -240,20 +245,20 @@ private:
     return guardValue(guard, kinematics_buffer_, contacts_, dynamics_, space_);
   }
 
-  /// Values of every guard at evenly spaced instants of the step (one state evaluation per instant).
+  /// Values of every guard at evenly spaced instants of the step into guard_values_ (one state evaluation per
+  /// instant; the first one skipped when known).
   template <class Stepper>
-  Eigen::MatrixXd sampleGuards(const Stepper& stepper, const std::vector<Guard>& guards, double t0, double t1) const
+  void sampleGuards(const Stepper& stepper, const std::vector<Guard>& guards, double t0, double t1,
+                    bool first_row_known) const
   {
-    Eigen::MatrixXd values(SAMPLES_PER_STEP + 1, static_cast<Eigen::Index>(guards.size()));
-    for (int k = 0; k <= SAMPLES_PER_STEP; ++k)
+    for (int k = first_row_known ? 1 : 0; k <= SAMPLES_PER_STEP; ++k)
     {
       stepper.calc_state(sampleTime(t0, t1, k), buffer_);
       evaluateKinematics(dynamics_, buffer_.data(), kinematics_buffer_);
       for (std::size_t g = 0; g < guards.size(); ++g)
-        values(k, static_cast<Eigen::Index>(g)) =
+        guard_values_(k, static_cast<Eigen::Index>(g)) =
             guardValue(guards[g], kinematics_buffer_, contacts_, dynamics_, space_);
     }
-    return values;
   }
 
   static double sampleTime(double t0, double t1, int k)
@@ -261,12 +266,13 @@ private:
     return k == SAMPLES_PER_STEP ? t1 : t0 + (t1 - t0) * k / SAMPLES_PER_STEP;
   }
 
-  /// The earliest guard to rise through zero in [t0, t1], with every other one within round-off of it.
+  /// The earliest guard to rise through zero in [t0, t1] (from the samples in guard_values_), with every other one
+  /// within round-off of it.
   template <class Stepper>
   std::vector<FiredGuard> firedGuards(const Stepper& stepper, const std::vector<Guard>& guards, double t0,
                                       double t1) const
   {
-    const Eigen::MatrixXd values = sampleGuards(stepper, guards, t0, t1);
+    const Eigen::MatrixXd& values = guard_values_;
     std::vector<FiredGuard> crossings;
     for (std::size_t g = 0; g < guards.size(); ++g)
     {
@@ -338,6 +344,7 @@ private:
   OdeState y_;
   mutable OdeState buffer_;  ///< scratch state for dense-output evaluations
   mutable Kinematics kinematics_buffer_{};
+  mutable Eigen::MatrixXd guard_values_;  ///< guard samples of the current step: instants × guards
   double t_ = 0.0;
   std::size_t event_count_ = 0;
   std::size_t step_count_ = 0;
