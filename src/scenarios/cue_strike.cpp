@@ -103,7 +103,7 @@ Expected<Eigen::Vector3d> hitNormal(const Eigen::Vector3d& axis_point, const Eig
   return Eigen::Vector3d((axis_point + distance * c - ball_centre) / ball_radius);
 }
 
-Expected<CueStrikeResult> solve(const CueStrike& strike, const SolverOptions& options)
+Expected<ImpactProblem> makeImpactProblem(const CueStrike& strike)
 {
   if (Status status = check(strike); !status)
     return status.error();
@@ -111,7 +111,17 @@ Expected<CueStrikeResult> solve(const CueStrike& strike, const SolverOptions& op
   const Eigen::Vector3d c = strike.cue_direction.normalized();
   if (Status status = checkGeometry(n, c); !status)
     return status.error();
-  auto solved = solveMultipleImpact(makeImpactProblem(strike, n, c), options);
+  return makeImpactProblem(strike, n, c);
+}
+
+Expected<CueStrikeResult> solve(const CueStrike& strike, const SolverOptions& options)
+{
+  auto problem = makeImpactProblem(strike);
+  if (!problem)
+    return problem.error();
+  const Eigen::Vector3d n = strike.hit_normal.normalized();
+  const Eigen::Vector3d c = strike.cue_direction.normalized();
+  auto solved = solveMultipleImpact(problem.value(), options);
   if (!solved)
     return solved.error();
   CueStrikeResult result;

@@ -80,8 +80,9 @@ TEST(LinearPhase, RigidLinksMatchNumericalIntegration)
   chain.wall = true;
   expectSameSolution(chain, "chain against a plastic wall");
   const auto r = bsp::solve(chain).value();
-  const auto links = std::count_if(r.events.begin(), r.events.end(), [](const bsp::ContactEvent& event)
-                                   { return event.type == bsp::ContactEventType::RigidLink; });
+  const auto links =
+      std::count_if(r.events.begin(), r.events.end(),
+                    [](const bsp::ContactEvent& event) { return event.type == bsp::ContactEventType::RigidLink; });
   EXPECT_GT(links, 0);  // the case exercises the rigid-link projection
 }
 

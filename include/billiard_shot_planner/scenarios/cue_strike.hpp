@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "billiard_shot_planner/core/expected.hpp"
+#include "billiard_shot_planner/impact/impact_problem.hpp"
 #include "billiard_shot_planner/impact/impact_result.hpp"
 #include "billiard_shot_planner/impact/solver_options.hpp"
 #include "billiard_shot_planner/scenarios/sphere_kinematics.hpp"
@@ -52,6 +53,10 @@ struct CueStrikeResult
   bool miscue = false;
   ImpactResult impact;  ///< the engine's full result: contact 0 is cue–ball, contact 1 is ball–table
 };
+
+/// The engine's configuration for this strike: generalised velocity (v_c, v, ω), contact 0 cue–ball, contact 1
+/// ball–table. Errors as solve().
+Expected<ImpactProblem> makeImpactProblem(const CueStrike& strike);
 
 /// Solves the strike with the multiple-impact engine. Errors: InvalidArgument (a field, named), InvalidShot
 /// (n̂·ĉ ≥ 0: the cue does not approach; the hit point below the equator, or on it with ĉ·ẑ ≥ 0, which the model
