@@ -1,7 +1,11 @@
 #pragma once
 
-// Settings and reference solutions shared by the benchmark programs.
+// Problems, settings, reference solutions and the timed solve loop shared by the benchmark programs.
+#include <benchmark/benchmark.h>
+
 #include <Eigen/Core>
+#include <cmath>
+#include <cstddef>
 
 #include "billiard_shot_planner/impact/impact_result.hpp"
 #include "billiard_shot_planner/impact/solver_options.hpp"
@@ -13,6 +17,34 @@
 namespace bench
 {
 namespace bsp = billiard_shot_planner;
+
+/// The paper's ball–ball–table collisions (§6.3): m1 = 1, m2 = 2/√3, k2/k1 = 1, v0 = −1.
+inline bsp::BallBallTable paperCollision(double e1, double e2)
+{
+  return {1.0, 2.0 / std::sqrt(3.0), 1.0, e1, e2, -1.0};
+}
+
+inline bsp::BallBallTable table1()
+{
+  return paperCollision(0.9, 0.7);
+}
+
+inline bsp::BallBallTable figure7()
+{
+  return paperCollision(1.0, 1.0);
+}
+
+/// Unit masses and linear unit contacts, all elastic; the first ball moves at 1 m/s into the others at rest.
+inline bsp::BallChain elasticChain(std::size_t balls)
+{
+  bsp::BallChain chain;
+  chain.masses.assign(balls, 1.0);
+  chain.velocities.assign(balls, 0.0);
+  chain.velocities[0] = 1.0;
+  chain.stiffness.assign(balls - 1, 1.0);
+  chain.restitution.assign(balls - 1, 1.0);
+  return chain;
+}
 
 inline bsp::SolverOptions withTolerance(double relative)
 {
@@ -53,6 +85,15 @@ template <class Problem>
 double velocityError(const Problem& problem, const bsp::SolverOptions& options)
 {
   return (impactOf(bsp::solve(problem, options).value()).velocity - referenceVelocities(problem)).cwiseAbs().maxCoeff();
+}
+
+/// Times the solve and reports its velocity error as the counter velocity_error.
+template <class Problem>
+void timeSolves(benchmark::State& state, const Problem& problem, const bsp::SolverOptions& options)
+{
+  for (auto _ : state)
+    benchmark::DoNotOptimize(bsp::solve(problem, options));
+  state.counters["velocity_error"] = velocityError(problem, options);
 }
 
 }  // namespace bench

@@ -5,9 +5,6 @@
 
 #include "bench_support.hpp"
 #include "billiard_shot_planner/motion/ball_motion.hpp"
-#include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
-#include "billiard_shot_planner/scenarios/ball_chain.hpp"
-#include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "paper_impulse_method.hpp"
 #include "paper_masse_method.hpp"
 
@@ -15,58 +12,33 @@ namespace bsp = billiard_shot_planner;
 
 namespace
 {
-bsp::BallBallTable table1()
-{
-  return {1.0, 2.0 / std::sqrt(3.0), 1.0, 0.9, 0.7, -1.0};
-}
-
-bsp::BallChain elasticChain(std::size_t balls)
-{
-  bsp::BallChain chain;
-  chain.masses.assign(balls, 1.0);
-  chain.velocities.assign(balls, 0.0);
-  chain.velocities[0] = 1.0;
-  chain.stiffness.assign(balls - 1, 1.0);
-  chain.restitution.assign(balls - 1, 1.0);
-  return chain;
-}
-
-/// The paper's massé shot with the errata's mass and radius, literal cue direction.
-bsp::CueStrike masse()
-{
-  return bsp::paperMasseStrike();
-}
-
 /// Argument: −log10 of the relative tolerance (12 is the default).
 template <class Problem>
 void solveRepeatedly(benchmark::State& state, const Problem& problem, bool closed_form = true)
 {
   const double tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
-  const bsp::SolverOptions options = closed_form ? bench::withTolerance(tolerance) : bench::integratedOnly(tolerance);
-  for (auto _ : state)
-    benchmark::DoNotOptimize(bsp::solve(problem, options));
-  state.counters["velocity_error"] = bench::velocityError(problem, options);
+  bench::timeSolves(state, problem, closed_form ? bench::withTolerance(tolerance) : bench::integratedOnly(tolerance));
 }
 
 void BM_Table1(benchmark::State& state)
 {
-  solveRepeatedly(state, table1());
+  solveRepeatedly(state, bench::table1());
 }
 
 /// The same with every state integrated numerically: what the closed form saves.
 void BM_Table1Integrated(benchmark::State& state)
 {
-  solveRepeatedly(state, table1(), false);
+  solveRepeatedly(state, bench::table1(), false);
 }
 
 void BM_ElasticChain10(benchmark::State& state)
 {
-  solveRepeatedly(state, elasticChain(10));
+  solveRepeatedly(state, bench::elasticChain(10));
 }
 
 void BM_MasseStrike(benchmark::State& state)
 {
-  solveRepeatedly(state, masse());
+  solveRepeatedly(state, bsp::paperMasseStrike());
 }
 /// A sliding ball on a 9-ft table without pockets that hits three cushions (hopping after each) before it stops.
 void BM_TrajectoryThreeCushions(benchmark::State& state)
@@ -92,10 +64,11 @@ void BM_TrajectoryThreeCushions(benchmark::State& state)
 void BM_Table1PaperMethod(benchmark::State& state)
 {
   const double step = std::pow(10.0, -static_cast<double>(state.range(0)));
+  const bsp::BallBallTable c = bench::table1();
   paper_method::Result result{};
   for (auto _ : state)
   {
-    result = paper_method::solve(1.0, 2.0 / std::sqrt(3.0), 1.0, 0.9, 0.7, -1.0, step);
+    result = paper_method::solve(c.m1, c.m2, c.stiffness_ratio, c.e1, c.e2, c.v0, step);
     benchmark::DoNotOptimize(result);
   }
   state.counters["velocity_error"] = std::max(std::abs(result.v1 - 0.6139494), std::abs(result.v2 - 0.2097195));
@@ -105,7 +78,7 @@ void BM_Table1PaperMethod(benchmark::State& state)
 /// The paper's method on the massé strike; argument: −log10 of the impulse step in units of m_ball·v_cue.
 void BM_MassePaperMethod(benchmark::State& state)
 {
-  const bsp::CueStrike strike = masse();
+  const bsp::CueStrike strike = bsp::paperMasseStrike();
   const bsp::ImpactProblem problem = bsp::makeImpactProblem(strike).value();
   const double step = std::pow(10.0, -static_cast<double>(state.range(0))) * strike.ball_mass * strike.cue_speed;
   paper_method::MasseResult result;

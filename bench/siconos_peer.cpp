@@ -27,22 +27,6 @@ namespace bsp = billiard_shot_planner;
 
 namespace
 {
-bsp::BallBallTable figure7()
-{
-  return {1.0, 2.0 / std::sqrt(3.0), 1.0, 1.0, 1.0, -1.0};
-}
-
-bsp::BallChain elasticChain()
-{
-  bsp::BallChain chain;
-  chain.masses.assign(10, 1.0);
-  chain.velocities.assign(10, 0.0);
-  chain.velocities[0] = 1.0;
-  chain.stiffness.assign(9, 1.0);
-  chain.restitution.assign(9, 1.0);
-  return chain;
-}
-
 /// MultipleImpact with its solve timed: compute() is what the event-driven simulation calls at the impact.
 class TimedMultipleImpact : public MultipleImpact
 {
@@ -142,7 +126,7 @@ private:
 /// Fig. 7 at the instant of contact (radius 0.5: positions exact in binary). Velocities ordered (v1, v2).
 SiconosLine siconosFigure7()
 {
-  const bsp::BallBallTable c = figure7();
+  const bsp::BallBallTable c = bench::figure7();
   SiconosLine line;
   const auto lower = line.addBody(c.m2, 0.5, 0.0);
   const auto upper = line.addBody(c.m1, 1.5, c.v0);
@@ -153,7 +137,7 @@ SiconosLine siconosFigure7()
 
 SiconosLine siconosChain()
 {
-  const bsp::BallChain c = elasticChain();
+  const bsp::BallChain c = bench::elasticChain(10);
   SiconosLine line;
   std::vector<SP::LagrangianLinearTIDS> balls;
   for (std::size_t i = 0; i < c.masses.size(); ++i)
@@ -189,32 +173,29 @@ void siconosSolve(benchmark::State& state, const Problem& problem, SiconosLine (
 template <class Problem>
 void packageSolve(benchmark::State& state, const Problem& problem)
 {
-  const bsp::SolverOptions options = state.range(0) < 0
-                                         ? bsp::SolverOptions{}
-                                         : bench::integratedOnly(std::pow(10.0, -static_cast<double>(state.range(0))));
-  for (auto _ : state)
-    benchmark::DoNotOptimize(bsp::solve(problem, options));
-  state.counters["velocity_error"] = bench::velocityError(problem, options);
+  bench::timeSolves(state, problem,
+                    state.range(0) < 0 ? bsp::SolverOptions{}
+                                       : bench::integratedOnly(std::pow(10.0, -static_cast<double>(state.range(0)))));
 }
 
 void BM_SiconosFigure7(benchmark::State& state)
 {
-  siconosSolve(state, figure7(), siconosFigure7, true);
+  siconosSolve(state, bench::figure7(), siconosFigure7, true);
 }
 
 void BM_SiconosChain10(benchmark::State& state)
 {
-  siconosSolve(state, elasticChain(), siconosChain, false);
+  siconosSolve(state, bench::elasticChain(10), siconosChain, false);
 }
 
 void BM_PackageFigure7(benchmark::State& state)
 {
-  packageSolve(state, figure7());
+  packageSolve(state, bench::figure7());
 }
 
 void BM_PackageChain10(benchmark::State& state)
 {
-  packageSolve(state, elasticChain());
+  packageSolve(state, bench::elasticChain(10));
 }
 
 /// Steps 1e-2 … 1e-6: the cost grows as 1/step, so the small steps run once per repetition.
