@@ -1,7 +1,6 @@
 #include "linear_phase.hpp"
 
 #include <Eigen/Eigenvalues>
-#include <Eigen/QR>
 #include <cmath>
 
 namespace billiard_shot_planner
@@ -44,12 +43,12 @@ bool LinearPhaseStepper::applies(const std::vector<ContactState>& contacts, cons
 }
 
 LinearPhaseStepper::LinearPhaseStepper(const ContactSpace& space, const std::vector<ContactState>& contacts,
-                                       const OdeState& y0, double t0, double radians_per_step)
+                                       const ContactDynamics& dynamics, const OdeState& y0, double t0,
+                                       double radians_per_step)
     : y0_(y0), t0_(t0), t_(t0)
 {
   const Eigen::Index n = space.size;
   std::vector<double> stiffness;
-  std::vector<int> link_rows;
   for (std::size_t i = 0; i < contacts.size(); ++i)
   {
     const ContactState& contact = contacts[i];
@@ -61,8 +60,6 @@ LinearPhaseStepper::LinearPhaseStepper(const ContactSpace& space, const std::vec
       moving_rows_.push_back(row);
       stiffness.push_back(contact.stiffness);
     }
-    if (contact.phase == NormalPhase::RigidLink)
-      link_rows.push_back(row);
     if (space.dim[i] == 3)
       for (int k = 1; k <= 2; ++k)
       {
@@ -70,41 +67,29 @@ LinearPhaseStepper::LinearPhaseStepper(const ContactSpace& space, const std::vec
         stiffness.push_back(contact.kappa);
       }
   }
-  // Rigid links: F = Π F_s with Π = 1 − B W_LL⁺ W_L (the link forces keep their normal velocities at zero, as in
-  // ContactDynamics::forces). W Π is then the Schur complement of the links in W, symmetric.
-  Eigen::MatrixXd projection;
-  Eigen::MatrixXd reduced_delassus;
-  if (!link_rows.empty())
-  {
-    const auto links = static_cast<Eigen::Index>(link_rows.size());
-    Eigen::MatrixXd link_delassus_rows(links, n);
-    for (Eigen::Index l = 0; l < links; ++l)
-      link_delassus_rows.row(l) = space.delassus.row(link_rows[l]);
-    Eigen::MatrixXd link_block(links, links);
-    for (Eigen::Index l = 0; l < links; ++l)
-      link_block.col(l) = link_delassus_rows.col(link_rows[l]);
-    const Eigen::MatrixXd link_forces =
-        link_block.completeOrthogonalDecomposition().pseudoInverse() * link_delassus_rows;
-    projection = Eigen::MatrixXd::Identity(n, n);
-    for (Eigen::Index l = 0; l < links; ++l)
-      projection.row(link_rows[l]) -= link_forces.row(l);
-    reduced_delassus = space.delassus * projection;
-  }
-  const bool linked = !link_rows.empty();
-  const Eigen::MatrixXd& delassus = linked ? reduced_delassus : space.delassus;
+  // Without sliding, the forces (rigid-link forces included) are linear in the moving springs: F = G s_R. G is read
+  // off ContactDynamics::forces one spring at a time, so the closed form uses the very force law it replaces.
+  // With rigid links G = Π E_R (−K), Π = 1 − B W_LL⁺ W_L, and W G = (W Π) E_R (−K) with W Π symmetric (the Schur
+  // complement of the links in W).
   const auto r = static_cast<Eigen::Index>(moving_rows_.size());
+  Eigen::MatrixXd force_from_s(n, r);  // G
+  OdeState unit_spring(y0.size(), 0.0);
+  Eigen::VectorXd force;
+  for (Eigen::Index a = 0; a < r; ++a)
+  {
+    unit_spring[static_cast<std::size_t>(n + moving_rows_[a])] = 1.0;
+    dynamics.forces(unit_spring.data(), force);
+    force_from_s.col(a) = force;
+    unit_spring[static_cast<std::size_t>(n + moving_rows_[a])] = 0.0;
+  }
+  const Eigen::MatrixXd delassus_times_g = space.delassus * force_from_s;
   Eigen::VectorXd sqrt_k(r);
-  Eigen::MatrixXd reduced(r, r);       // (W Π)_RR
-  Eigen::MatrixXd force_from_s(n, r);  // G = Π E_R (−K)
+  Eigen::MatrixXd reduced(r, r);  // (W Π)_RR
   for (Eigen::Index a = 0; a < r; ++a)
   {
     sqrt_k(a) = std::sqrt(stiffness[a]);
-    if (linked)
-      force_from_s.col(a) = -stiffness[a] * projection.col(moving_rows_[a]);
-    else
-      force_from_s.col(a) = -stiffness[a] * Eigen::VectorXd::Unit(n, moving_rows_[a]);
     for (Eigen::Index b = 0; b < r; ++b)
-      reduced(a, b) = delassus(moving_rows_[a], moving_rows_[b]);
+      reduced(a, b) = -delassus_times_g(moving_rows_[a], b) / stiffness[b];
   }
   const Eigen::MatrixXd symmetric = sqrt_k.asDiagonal() * (0.5 * (reduced + reduced.transpose())) * sqrt_k.asDiagonal();
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> modes(symmetric);
@@ -112,8 +97,7 @@ LinearPhaseStepper::LinearPhaseStepper(const ContactSpace& space, const std::vec
   spring_from_modes_ = sqrt_k.cwiseInverse().asDiagonal() * modes.eigenvectors();
   impulse_from_modes_ = force_from_s * spring_from_modes_;
 
-  const Eigen::Map<const Eigen::VectorXd> impulses(y0.data(), n);
-  const Eigen::VectorXd velocity = space.w0 + space.delassus * impulses;
+  const Eigen::VectorXd velocity = dynamics.relativeVelocity(y0.data());
   Eigen::VectorXd z(r), z_rate(r);
   for (Eigen::Index a = 0; a < r; ++a)
   {

@@ -25,8 +25,9 @@ public:
   static bool applies(const std::vector<ContactState>& contacts, const ContactSpace& space);
 
   /// Steps span `radians_per_step` of the fastest mode's phase.
-  LinearPhaseStepper(const ContactSpace& space, const std::vector<ContactState>& contacts, const OdeState& y0,
-                     double t0, double radians_per_step);
+  /// `dynamics` must describe the same discrete state as `contacts` (refreshed after the last transition).
+  LinearPhaseStepper(const ContactSpace& space, const std::vector<ContactState>& contacts,
+                     const ContactDynamics& dynamics, const OdeState& y0, double t0, double radians_per_step);
 
   /// Advances by a fixed step: a fraction of the fastest period, so that guard sampling sees every crossing.
   template <class System>

@@ -179,7 +179,7 @@ private:
   {
     if (options_.closed_form_linear_phases && LinearPhaseStepper::applies(contacts_, space_))
     {
-      LinearPhaseStepper stepper(space_, contacts_, y_, t_,
+      LinearPhaseStepper stepper(space_, contacts_, dynamics_, y_, t_,
                                  options_.record_samples ? RADIANS_PER_RECORDED_STEP : RADIANS_PER_CLOSED_FORM_STEP);
       return advanceWith(stepper);
     }
