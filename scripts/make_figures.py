@@ -26,6 +26,28 @@ def ball_ball_table(program, m2, e1, e2):
                            "solver": {"record_samples": True}})
 
 
+def finish_axes(ax, xlabel, ylabel, title, legend=None):
+    """Labels, title, grid, and a legend of the given font size (none if legend is None)."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    if legend is not None:
+        ax.legend(**legend)
+    ax.grid(alpha=0.3)
+
+
+def save(fig, out, name):
+    fig.tight_layout()
+    fig.savefig(f"{out}/{name}", dpi=110)
+    plt.close(fig)
+    return name
+
+
+def xy(samples):
+    """The planar path of a trajectory's samples."""
+    return [s["position"][0] for s in samples], [s["position"][1] for s in samples]
+
+
 def impulse_curve(ax, result, m2, title, printed=None):
     i1 = [s["impulses"][0] for s in result["samples"]]
     i2 = [s["impulses"][1] for s in result["samples"]]
@@ -57,11 +79,8 @@ def impulse_curve(ax, result, m2, title, printed=None):
     ax.plot([], [], "^", color="tab:red", label="reactivation")
     ax.set_xlim(-0.05, 2.1)
     ax.set_ylim(-0.3, 2.9)
-    ax.set_xlabel("I1 (ball–ball)")
-    ax.set_ylabel("I2 (ball–table)")
-    ax.set_title(title + "  states " + " ".join(result["states"]))
-    ax.legend(fontsize=7, loc="upper left")
-    ax.grid(alpha=0.3)
+    finish_axes(ax, "I1 (ball–ball)", "I2 (ball–table)", title + "  states " + " ".join(result["states"]),
+                legend={"fontsize": 7, "loc": "upper left"})
 
 
 def figure_impulse_curves(program, out):
@@ -72,10 +91,7 @@ def figure_impulse_curves(program, out):
     for name, m2, e1, e2, title, printed in cases:
         fig, ax = plt.subplots(figsize=(7, 6))
         impulse_curve(ax, ball_ball_table(program, m2, e1, e2), m2, title, printed)
-        fig.tight_layout()
-        fig.savefig(f"{out}/{name}", dpi=110)
-        plt.close(fig)
-        names.append(name)
+        names.append(save(fig, out, name))
     return names
 
 
@@ -85,21 +101,13 @@ def figure_8(program, out):
     a.plot([s["velocities"][0] for s in r["samples"]], [s["velocities"][1] for s in r["samples"]])
     a.plot(0.61377, 0.20947, "*", color="purple", ms=10, label="paper's printed final velocities")
     a.plot(r["v1"], r["v2"], "o", color="tab:red", label="this package")
-    a.set_xlabel("v1 (upper ball)")
-    a.set_ylabel("v2 (lower ball)")
-    a.set_title("Fig. 8(a): velocities along the collision")
-    a.legend(fontsize=8)
-    a.grid(alpha=0.3)
+    finish_axes(a, "v1 (upper ball)", "v2 (lower ball)", "Fig. 8(a): velocities along the collision",
+                legend={"fontsize": 8})
     b.plot([s["strain_energies"][0] for s in r["samples"]], [s["strain_energies"][1] for s in r["samples"]], ".",
            ms=2)
-    b.set_xlabel("E1 (ball–ball spring)")
-    b.set_ylabel("E2 (ball–table spring)")
-    b.set_title("Fig. 8(b): strain energies (jumps at ends of compression)")
-    b.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(f"{out}/fig8_velocities_energies.png", dpi=110)
-    plt.close(fig)
-    return ["fig8_velocities_energies.png"]
+    finish_axes(b, "E1 (ball–ball spring)", "E2 (ball–table spring)",
+                "Fig. 8(b): strain energies (jumps at ends of compression)")
+    return [save(fig, out, "fig8_velocities_energies.png")]
 
 
 MASSE = {"problem": "shot", "ball_position": [0.0, 0.0], "cue_mass": 0.5018,
@@ -113,40 +121,25 @@ MASSE = {"problem": "shot", "ball_position": [0.0, 0.0], "cue_mass": 0.5018,
 def planar_path(program, v, w):
     r = solve(program, {"problem": "ball_motion", "position": [0, 0], "v": v, "omega": w, "ball_radius": 0.0286,
                         "planar": True, "table": {"length": 40, "width": 40, "pockets": []}, "sample_spacing": 0.02})
-    return [s["position"][0] for s in r["samples"]], [s["position"][1] for s in r["samples"]]
+    return xy(r["samples"])
 
 
 def figure_masse(program, out):
     fig, (a, b) = plt.subplots(1, 2, figsize=(12, 5.5))
     shot = solve(program, MASSE)["trajectory"]
-    a.plot([s["position"][0] for s in shot["samples"]], [s["position"][1] for s in shot["samples"]],
-           label="this package (literal cue direction)")
+    a.plot(*xy(shot["samples"]), label="this package (literal cue direction)")
     a.plot(*planar_path(program, [-1.67629, -0.075349, 0.637937], [40.3064, 83.6145, -15.4927]), "--",
            label="from the paper's prediction (57)")
     a.plot(*planar_path(program, [-1.67063, -0.274431, 0], [28.4584, 79.1561, 0]), ":",
            label="from the measurement (56)")
-    a.set_aspect("auto")
-    a.set_xlabel("x (m)")
-    a.set_ylabel("y (m)")
-    a.set_title("Massé shot of §9.2: planar paths from (0, 0)")
-    a.legend(fontsize=8)
-    a.grid(alpha=0.3)
+    finish_axes(a, "x (m)", "y (m)", "Massé shot of §9.2: planar paths from (0, 0)", legend={"fontsize": 8})
     for eta2 in range(2, 8):
         problem = dict(MASSE)
         problem["cue_contact"] = dict(MASSE["cue_contact"], eta2=eta2)
         t = solve(program, problem)["trajectory"]
-        b.plot([s["position"][0] for s in t["samples"]], [s["position"][1] for s in t["samples"]],
-               label=f"η² (cue–ball) = {eta2}")
-    b.set_aspect("auto")
-    b.set_xlabel("x (m)")
-    b.set_ylabel("y (m)")
-    b.set_title("Fig. 16(d): paths for η² from 2 to 7")
-    b.legend(fontsize=8)
-    b.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(f"{out}/masse_paths.png", dpi=110)
-    plt.close(fig)
-    return ["masse_paths.png"]
+        b.plot(*xy(t["samples"]), label=f"η² (cue–ball) = {eta2}")
+    finish_axes(b, "x (m)", "y (m)", "Fig. 16(d): paths for η² from 2 to 7", legend={"fontsize": 8})
+    return [save(fig, out, "masse_paths.png")]
 
 
 def main():
