@@ -10,6 +10,7 @@
 // where the paper solves a quadratic for the first slope. First order in the step, like the paper's own runs.
 #include <Eigen/Dense>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "billiard_shot_planner/impact/impact_problem.hpp"
@@ -115,6 +116,18 @@ inline void transitions(Spring& c, const Eigen::Vector3d& w)
   else if (c.slipping && c.direction().dot(w.head<2>()) + c.mu * eta2 * w_n <= 0.0)
     c.slipping = false;
 }
+/// The primary contact (footnote 18): the active one with the largest k·E; where no spring is loaded yet, the one
+/// approaching fastest. Ties keep the first.
+inline const Spring* primarySpring(const std::vector<Spring>& springs, const Eigen::VectorXd& u)
+{
+  auto priority = [&u](const Spring& s)
+  { return s.energy() > 0.0 ? std::make_pair(1.0, s.k * s.energy()) : std::make_pair(0.0, -(s.rows.row(2) * u)(0)); };
+  const Spring* primary = nullptr;
+  for (const Spring& s : springs)
+    if (s.phase != Phase::Inactive && (!primary || priority(s) > priority(*primary)))
+      primary = &s;
+  return primary;
+}
 }  // namespace detail
 
 /// Solves a problem of frictional 3-D contacts (the cue strike) with the primary-impulse step `step` (N·s).
@@ -157,12 +170,7 @@ inline MasseResult solveMasse(const billiard_shot_planner::ImpactProblem& proble
   while (anyActive() && result.steps < 200000000)
   {
     ++result.steps;
-    const detail::Spring* primary = nullptr;
-    for (const auto& s : springs)
-      if (s.phase != Phase::Inactive &&
-          (!primary || s.k * s.energy() > primary->k * primary->energy() ||
-           (primary->energy() == 0.0 && s.energy() == 0.0 && (s.rows.row(2) * u)(0) < (primary->rows.row(2) * u)(0))))
-        primary = &s;
+    const detail::Spring* primary = detail::primarySpring(springs, u);
     const double approach = std::max(-(primary->rows.row(2) * u)(0), 0.0);
     const double force = primary->normalForce();
     const double dt = 2.0 * step / (force + std::sqrt(force * force + 2.0 * primary->k * approach * step));
