@@ -34,21 +34,39 @@ std::pair<double, double> oscillator(double a, double b, double omega, double ta
 }
 }  // namespace
 
-bool LinearPhaseStepper::applies(const std::vector<ContactState>& contacts, const ContactSpace& space)
+namespace
 {
-  for (std::size_t i = 0; i < contacts.size(); ++i)
-    if (contacts[i].active() && space.dim[i] == 3 && contacts[i].slipping)
-      return false;
-  return true;
+/// Relative size below which a value is round-off of the values it was computed from.
+constexpr double ROUND_OFF = 1e-12;
+
+bool slides(const ContactState& contact, const ContactSpace& space, std::size_t i)
+{
+  return contact.active() && space.dim[i] == 3 && contact.slipping;
 }
 
-LinearPhaseStepper::LinearPhaseStepper(const ContactSpace& space, const std::vector<ContactState>& contacts,
-                                       const ContactDynamics& dynamics, const OdeState& y0, double t0,
-                                       double radians_per_step)
-    : y0_(y0), t0_(t0), t_(t0)
+/// A sliding contact keeps its direction ŝ when its tangential velocity has no part across ŝ, now or ever: the
+/// rows of W G that would accelerate it across are zero (a ball alone on the table: its friction only changes the
+/// tangential velocity along itself). Otherwise ŝ turns and the dynamics is not linear.
+bool directionFixed(std::size_t i, const ContactSpace& space, const ContactDynamics& dynamics, const OdeState& y0,
+                    const Eigen::VectorXd& velocity, const Eigen::MatrixXd& delassus_times_g)
 {
-  const Eigen::Index n = space.size;
-  std::vector<double> stiffness;
+  const Eigen::Vector2d direction = dynamics.springDirection(i, y0.data());
+  const Eigen::Vector2d across(-direction.y(), direction.x());
+  const int row = space.offset[i];
+  const double velocity_across = across.dot(velocity.segment<2>(row + 1));
+  const Eigen::RowVectorXd acceleration_across =
+      across.x() * delassus_times_g.row(row + 1) + across.y() * delassus_times_g.row(row + 2);
+  return std::abs(velocity_across) <= ROUND_OFF * velocity.lpNorm<Eigen::Infinity>() &&
+         (acceleration_across.size() == 0 ||
+          acceleration_across.lpNorm<Eigen::Infinity>() <= ROUND_OFF * delassus_times_g.lpNorm<Eigen::Infinity>());
+}
+}  // namespace
+
+std::optional<Eigen::MatrixXd> LinearPhaseStepper::forceMap(const ContactSpace& space,
+                                                            const std::vector<ContactState>& contacts,
+                                                            const ContactDynamics& dynamics,
+                                                            std::vector<double>& stiffness)
+{
   for (std::size_t i = 0; i < contacts.size(); ++i)
   {
     const ContactState& contact = contacts[i];
@@ -60,57 +78,90 @@ LinearPhaseStepper::LinearPhaseStepper(const ContactSpace& space, const std::vec
       moving_rows_.push_back(row);
       stiffness.push_back(contact.stiffness);
     }
-    if (space.dim[i] == 3)
+    if (space.dim[i] == 3 && !contact.slipping)  // a sliding spring only carries its (fixed) direction
       for (int k = 1; k <= 2; ++k)
       {
         moving_rows_.push_back(row + k);
         stiffness.push_back(contact.kappa);
       }
   }
-  // Without sliding, the forces (rigid-link forces included) are linear in the moving springs: F = G s_R. G is read
-  // off ContactDynamics::forces one spring at a time, so the closed form uses the very force law it replaces.
-  // With rigid links G = Π E_R (−K), Π = 1 − B W_LL⁺ W_L, and W G = (W Π) E_R (−K) with W Π symmetric (the Schur
-  // complement of the links in W).
+  // The forces (rigid-link forces and sliding friction included) are linear in the moving springs: F = G s_R. G is
+  // read off ContactDynamics::forces one spring at a time, so the closed form uses the very force law it replaces.
+  // The other springs keep their values: a sliding spring's direction sets its friction.
+  const Eigen::Index n = space.size;
   const auto r = static_cast<Eigen::Index>(moving_rows_.size());
-  Eigen::MatrixXd force_from_s(n, r);  // G
-  OdeState unit_spring(y0.size(), 0.0);
+  OdeState probe = y0_;
+  for (int row : moving_rows_)
+    probe[static_cast<std::size_t>(n + row)] = 0.0;
+  Eigen::MatrixXd force_from_s(n, r);
   Eigen::VectorXd force;
   for (Eigen::Index a = 0; a < r; ++a)
   {
-    unit_spring[static_cast<std::size_t>(n + moving_rows_[a])] = 1.0;
-    dynamics.forces(unit_spring.data(), force);
+    probe[static_cast<std::size_t>(n + moving_rows_[a])] = 1.0;
+    dynamics.forces(probe.data(), force);
     force_from_s.col(a) = force;
-    unit_spring[static_cast<std::size_t>(n + moving_rows_[a])] = 0.0;
+    probe[static_cast<std::size_t>(n + moving_rows_[a])] = 0.0;
   }
   const Eigen::MatrixXd delassus_times_g = space.delassus * force_from_s;
+  const Eigen::VectorXd velocity = dynamics.relativeVelocity(y0_.data());
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    if (slides(contacts[i], space, i) && !directionFixed(i, space, dynamics, y0_, velocity, delassus_times_g))
+      return std::nullopt;
+  return force_from_s;
+}
+
+std::optional<LinearPhaseStepper> LinearPhaseStepper::tryBuild(const ContactSpace& space,
+                                                               const std::vector<ContactState>& contacts,
+                                                               const ContactDynamics& dynamics, const OdeState& y0,
+                                                               double t0, double radians_per_step)
+{
+  LinearPhaseStepper stepper(y0, t0);
+  std::vector<double> stiffness;
+  std::optional<Eigen::MatrixXd> force_from_s = stepper.forceMap(space, contacts, dynamics, stiffness);
+  if (!force_from_s)
+    return std::nullopt;
+  bool sliding = false;
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    sliding = sliding || slides(contacts[i], space, i);
+  // With rigid links G = Π E_R (−K), Π = 1 − B W_LL⁺ W_L, and W G = (W Π) E_R (−K) with W Π symmetric (the Schur
+  // complement of the links in W) unless friction slides: then symmetry is checked, not assumed.
+  const Eigen::Index n = space.size;
+  const auto r = static_cast<Eigen::Index>(stepper.moving_rows_.size());
+  const Eigen::MatrixXd delassus_times_g = space.delassus * *force_from_s;
   Eigen::VectorXd sqrt_k(r);
   Eigen::MatrixXd reduced(r, r);  // (W Π)_RR
   for (Eigen::Index a = 0; a < r; ++a)
   {
     sqrt_k(a) = std::sqrt(stiffness[a]);
     for (Eigen::Index b = 0; b < r; ++b)
-      reduced(a, b) = -delassus_times_g(moving_rows_[a], b) / stiffness[b];
+      reduced(a, b) = -delassus_times_g(stepper.moving_rows_[a], b) / stiffness[b];
   }
+  if (sliding && r > 0 &&
+      (reduced - reduced.transpose()).lpNorm<Eigen::Infinity>() > ROUND_OFF * reduced.lpNorm<Eigen::Infinity>())
+    return std::nullopt;
   const Eigen::MatrixXd symmetric = sqrt_k.asDiagonal() * (0.5 * (reduced + reduced.transpose())) * sqrt_k.asDiagonal();
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> modes(symmetric);
-  omega_ = modes.eigenvalues().cwiseMax(0.0).cwiseSqrt();
-  spring_from_modes_ = sqrt_k.cwiseInverse().asDiagonal() * modes.eigenvectors();
-  impulse_from_modes_ = force_from_s * spring_from_modes_;
+  if (sliding && r > 0 && modes.eigenvalues().minCoeff() < -ROUND_OFF * modes.eigenvalues().cwiseAbs().maxCoeff())
+    return std::nullopt;  // friction could make the springs grow without bound: left to the integrator
+  stepper.omega_ = modes.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  stepper.spring_from_modes_ = sqrt_k.cwiseInverse().asDiagonal() * modes.eigenvectors();
+  stepper.impulse_from_modes_ = *force_from_s * stepper.spring_from_modes_;
 
   const Eigen::VectorXd velocity = dynamics.relativeVelocity(y0.data());
   Eigen::VectorXd z(r), z_rate(r);
   for (Eigen::Index a = 0; a < r; ++a)
   {
-    z(a) = sqrt_k(a) * y0[static_cast<std::size_t>(n + moving_rows_[a])];
-    z_rate(a) = sqrt_k(a) * velocity(moving_rows_[a]);
+    z(a) = sqrt_k(a) * y0[static_cast<std::size_t>(n + stepper.moving_rows_[a])];
+    z_rate(a) = sqrt_k(a) * velocity(stepper.moving_rows_[a]);
   }
-  modal_position_ = modes.eigenvectors().transpose() * z;
-  modal_velocity_ = modes.eigenvectors().transpose() * z_rate;
-  position_.resize(r);
-  integral_.resize(r);
-  springs_.resize(r);
-  const double fastest = r > 0 ? omega_.maxCoeff() : 0.0;
-  step_ = radians_per_step / (fastest > 0.0 ? fastest : 1.0);
+  stepper.modal_position_ = modes.eigenvectors().transpose() * z;
+  stepper.modal_velocity_ = modes.eigenvectors().transpose() * z_rate;
+  stepper.position_.resize(r);
+  stepper.integral_.resize(r);
+  stepper.springs_.resize(r);
+  const double fastest = r > 0 ? stepper.omega_.maxCoeff() : 0.0;
+  stepper.step_ = radians_per_step / (fastest > 0.0 ? fastest : 1.0);
+  return stepper;
 }
 
 void LinearPhaseStepper::calc_state(double t, OdeState& y) const

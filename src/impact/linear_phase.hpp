@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -10,24 +11,27 @@ namespace billiard_shot_planner
 {
 namespace detail
 {
-/// Closed-form spring dynamics for a discrete state in which no active contact slides.
+/// Closed-form spring dynamics for a discrete state whose dynamics is linear.
 ///
-/// Then every force is linear in the spring lengths (F = −k s_n, −κ s_t, and rigid-link forces that keep their
-/// normal velocities at zero), so the moving springs obey s̈ = −S K s with S the Delassus matrix reduced by the
-/// rigid links (a Schur complement, symmetric positive semi-definite). In z = K^{1/2} s this is a set of
-/// independent oscillators; the state at any instant is a sum of sines and cosines, exact to round-off. It replaces
-/// the numerical integrator in these states (frictionless contacts, sticking contacts), with the same interface as
-/// Odeint's dense-output steppers so that the guards and the root finding stay the same.
+/// That is every state in which no active contact slides (frictionless or sticking contacts), and those in which
+/// the sliding contacts cannot change their sliding direction (a ball sliding on the table alone: its tangential
+/// velocity only changes along the friction force). Then every force is linear in the moving spring lengths
+/// (F = −k s_n, −κ s_t, −μ F_n ŝ with ŝ fixed, and rigid-link forces that keep their normal velocities at zero), so
+/// they obey s̈ = −S K s with S the Delassus matrix reduced by the rigid links (a Schur complement). Where S is
+/// symmetric — always without sliding, and checked with it — z = K^{1/2} s is a set of independent oscillators; the
+/// state at any instant is a sum of sines and cosines, exact to round-off. It replaces the numerical integrator in
+/// these states, with the same interface as Odeint's dense-output steppers so that the guards and the root finding
+/// stay the same.
 class LinearPhaseStepper
 {
 public:
-  /// Whether the dynamics of this discrete state is linear: no active frictional contact is sliding.
-  static bool applies(const std::vector<ContactState>& contacts, const ContactSpace& space);
-
-  /// Steps span `radians_per_step` of the fastest mode's phase.
+  /// The closed form of the state from y0 at t0, or nothing when the state's dynamics is not linear (a sliding
+  /// direction would turn) or not symmetric. Steps span `radians_per_step` of the fastest mode's phase.
   /// `dynamics` must describe the same discrete state as `contacts` (refreshed after the last transition).
-  LinearPhaseStepper(const ContactSpace& space, const std::vector<ContactState>& contacts,
-                     const ContactDynamics& dynamics, const OdeState& y0, double t0, double radians_per_step);
+  static std::optional<LinearPhaseStepper> tryBuild(const ContactSpace& space,
+                                                    const std::vector<ContactState>& contacts,
+                                                    const ContactDynamics& dynamics, const OdeState& y0, double t0,
+                                                    double radians_per_step);
 
   /// Advances by a fixed step: a fraction of the fastest period, so that guard sampling sees every crossing.
   template <class System>
@@ -41,6 +45,11 @@ public:
   void calc_state(double t, OdeState& y) const;
 
 private:
+  LinearPhaseStepper(const OdeState& y0, double t0) : y0_(y0), t0_(t0), t_(t0), step_(0.0) {}
+  /// The force map G (F = G s_R over the moving springs), or nothing when a sliding direction could turn.
+  std::optional<Eigen::MatrixXd> forceMap(const ContactSpace& space, const std::vector<ContactState>& contacts,
+                                          const ContactDynamics& dynamics, std::vector<double>& stiffness);
+
   OdeState y0_;
   double t0_;
   double t_;

@@ -173,16 +173,15 @@ private:
     return std::sqrt(std::max(trace, std::numeric_limits<double>::min()));
   }
 
-  /// Integrates to the next transition: in closed form where no active contact slides (the dynamics is linear),
-  /// otherwise with Bulirsch–Stoer.
+  /// Integrates to the next transition: in closed form where the dynamics is linear (no sliding direction can
+  /// turn), otherwise with Bulirsch–Stoer.
   Expected<bool> advanceToNextEvent()
   {
-    if (options_.closed_form_linear_phases && LinearPhaseStepper::applies(contacts_, space_))
-    {
-      LinearPhaseStepper stepper(space_, contacts_, dynamics_, y_, t_,
-                                 options_.record_samples ? RADIANS_PER_RECORDED_STEP : RADIANS_PER_CLOSED_FORM_STEP);
-      return advanceWith(stepper);
-    }
+    if (options_.closed_form_linear_phases)
+      if (auto stepper = LinearPhaseStepper::tryBuild(
+              space_, contacts_, dynamics_, y_, t_,
+              options_.record_samples ? RADIANS_PER_RECORDED_STEP : RADIANS_PER_CLOSED_FORM_STEP))
+        return advanceWith(*stepper);
     const double omega = fastestFrequency();
     DenseStepper stepper(options_.absolute_tolerance, options_.relative_tolerance, 1.0, 1.0, 0.5 / omega,
                          /*control_interpolation=*/true);

@@ -1,6 +1,7 @@
-// The closed-form propagation of states without sliding contacts (src/impact/linear_phase.cpp) against numerical
-// integration of the same spring dynamics (Bulirsch–Stoer at tolerance 1e-13): the same state sequence and the same
-// final velocities to 1e-9, on frictionless collisions, rigid links (e = 0), pure stick and the massé strike.
+// The closed-form propagation of linear states (src/impact/linear_phase.cpp) against numerical integration of the
+// same spring dynamics (Bulirsch–Stoer at tolerance 1e-13): the same state sequence and the same final velocities
+// to 1e-9, on frictionless collisions, rigid links (e = 0), pure stick, sliding with a fixed direction (landings),
+// and cases whose sliding direction turns (massé strike, cushion hits), which must be left to the integrator.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include "billiard_shot_planner/scenarios/ball_chain.hpp"
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
+#include "billiard_shot_planner/scenarios/cushion_impact.hpp"
 
 namespace bsp = billiard_shot_planner;
 
@@ -33,6 +35,10 @@ const bsp::ImpactResult& impactOf(const bsp::BallTableImpactResult& r)
   return r.impact;
 }
 const bsp::ImpactResult& impactOf(const bsp::CueStrikeResult& r)
+{
+  return r.impact;
+}
+const bsp::ImpactResult& impactOf(const bsp::CushionImpactResult& r)
 {
   return r.impact;
 }
@@ -97,4 +103,35 @@ TEST(LinearPhase, StickingContactsMatchNumericalIntegration)
   impact.table = {0.5, 0.25, 7.0};
   expectSameSolution(impact, "stick then slip");
   expectSameSolution(bsp::paperMasseStrike(), "massé strike");
+}
+
+TEST(LinearPhase, SlidingWithAFixedDirectionMatchesNumericalIntegration)
+{
+  // A ball alone on the table: friction only changes the tangential velocity along itself, so a contact that
+  // slides from the first instant keeps its direction and the state is linear.
+  bsp::BallTableImpact landing;
+  landing.mass = 0.17;
+  landing.radius = 0.0286;
+  landing.velocity = {-2.07, 0.24, -0.4};
+  landing.angular_velocity = {11.6, 25.3, -6.15};
+  landing.table = {0.51625, 0.152479, 10.0};
+  expectSameSolution(landing, "sliding landing");
+  landing.velocity = {2.9, 0.5, -1.5};  // slides, sticks, slides again (then in a direction that may turn)
+  landing.angular_velocity = {0.0, 0.0, 0.0};
+  landing.table = {0.5, 0.6, 3.0};
+  expectSameSolution(landing, "slide, stick, slide");
+}
+
+TEST(LinearPhase, TurningSlidingDirectionsAreLeftToTheIntegrator)
+{
+  bsp::CushionImpact cushion;  // cushion and cloth at once, with spin: both contacts slide, their directions turn
+  cushion.velocity = {1.5, 0.8, 0.0};
+  cushion.angular_velocity = {-10.0, 30.0, 20.0};
+  cushion.cushion_normal = -Eigen::Vector3d::UnitX();
+  cushion.cushion = {0.85, 0.2, 10.0};
+  cushion.cloth = {0.51625, 0.152479, 10.0};
+  expectSameSolution(cushion, "cushion hit on the cloth");
+  cushion.on_cloth = false;
+  cushion.velocity.z() = -0.3;
+  expectSameSolution(cushion, "cushion hit in flight");
 }
