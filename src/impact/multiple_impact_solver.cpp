@@ -1,5 +1,7 @@
 #include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
 
+#include "fast_binomial.hpp"  // before Odeint
+
 #include <boost/math/tools/toms748_solve.hpp>
 #include <boost/numeric/odeint.hpp>
 #include <functional>
