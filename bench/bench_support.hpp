@@ -13,6 +13,8 @@
 #include "billiard_shot_planner/scenarios/ball_chain.hpp"
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
+#include "billiard_shot_planner/scenarios/cushion_impact.hpp"
+#include "billiard_shot_planner/motion/table.hpp"
 
 namespace bench
 {
@@ -70,6 +72,36 @@ inline const bsp::ImpactResult& impactOf(const bsp::ImpactResult& result)
 inline const bsp::ImpactResult& impactOf(const bsp::CueStrikeResult& result)
 {
   return result.impact;
+}
+
+inline const bsp::ImpactResult& impactOf(const bsp::BallTableImpactResult& result)
+{
+  return result.impact;
+}
+
+inline const bsp::ImpactResult& impactOf(const bsp::CushionImpactResult& result)
+{
+  return result.impact;
+}
+
+/// The ball of the massé shot landing after its jump, sliding and spinning, on the default cloth: one contact
+/// that slides from its first instant to its last in a fixed direction.
+inline bsp::BallTableImpact masseLanding()
+{
+  return {0.17, 0.0286, {-2.07, 0.24, -0.4}, {11.6, 25.3, -6.15}, bsp::Table{}.cloth};
+}
+
+/// A ball sliding on the cloth into a cushion nose at 9-ft table height (normal tilted 15.6° down): cushion and
+/// cloth at once, the cloth contact sliding from zero load, its direction turning.
+inline bsp::CushionImpact cushionHit()
+{
+  bsp::CushionImpact hit;
+  hit.velocity = {1.5, 0.8, 0.0};
+  hit.cushion_normal = {-0.963, 0.0, -0.269};
+  hit.cushion_normal.normalize();
+  hit.cushion = bsp::Table{}.cushion;
+  hit.cloth = bsp::Table{}.cloth;
+  return hit;
 }
 
 /// The converged solution errors are measured against: numerical integration alone at tolerance 1e-14, independent

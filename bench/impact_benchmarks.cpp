@@ -40,6 +40,21 @@ void BM_MasseStrike(benchmark::State& state)
 {
   solveRepeatedly(state, bsp::paperMasseStrike());
 }
+void BM_Landing(benchmark::State& state)
+{
+  solveRepeatedly(state, bench::masseLanding());
+}
+
+void BM_LandingIntegrated(benchmark::State& state)
+{
+  solveRepeatedly(state, bench::masseLanding(), false);
+}
+
+void BM_CushionHit(benchmark::State& state)
+{
+  solveRepeatedly(state, bench::cushionHit());
+}
+
 /// A sliding ball on a 9-ft table without pockets that hits three cushions (hopping after each) before it stops.
 void BM_TrajectoryThreeCushions(benchmark::State& state)
 {
@@ -102,4 +117,7 @@ BENCHMARK(BM_Table1)->Arg(12)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Table1Integrated)->Arg(12)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ElasticChain10)->Arg(12)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MasseStrike)->Arg(8)->Arg(10)->Arg(12)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Landing)->Arg(12)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_LandingIntegrated)->Arg(12)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_CushionHit)->Arg(8)->Arg(12)->Unit(benchmark::kMicrosecond);
 BENCHMARK_MAIN();

@@ -62,10 +62,8 @@ bool directionFixed(std::size_t i, const ContactSpace& space, const ContactDynam
 }
 }  // namespace
 
-std::optional<Eigen::MatrixXd> LinearPhaseStepper::forceMap(const ContactSpace& space,
-                                                            const std::vector<ContactState>& contacts,
-                                                            const ContactDynamics& dynamics,
-                                                            std::vector<double>& stiffness)
+Eigen::MatrixXd LinearPhaseStepper::forceMap(const ContactSpace& space, const std::vector<ContactState>& contacts,
+                                             const ContactDynamics& dynamics, std::vector<double>& stiffness)
 {
   for (std::size_t i = 0; i < contacts.size(); ++i)
   {
@@ -102,11 +100,6 @@ std::optional<Eigen::MatrixXd> LinearPhaseStepper::forceMap(const ContactSpace& 
     force_from_s.col(a) = force;
     probe[static_cast<std::size_t>(n + moving_rows_[a])] = 0.0;
   }
-  const Eigen::MatrixXd delassus_times_g = space.delassus * force_from_s;
-  const Eigen::VectorXd velocity = dynamics.relativeVelocity(y0_.data());
-  for (std::size_t i = 0; i < contacts.size(); ++i)
-    if (slides(contacts[i], space, i) && !directionFixed(i, space, dynamics, y0_, velocity, delassus_times_g))
-      return std::nullopt;
   return force_from_s;
 }
 
@@ -117,17 +110,22 @@ std::optional<LinearPhaseStepper> LinearPhaseStepper::tryBuild(const ContactSpac
 {
   LinearPhaseStepper stepper(y0, t0);
   std::vector<double> stiffness;
-  std::optional<Eigen::MatrixXd> force_from_s = stepper.forceMap(space, contacts, dynamics, stiffness);
-  if (!force_from_s)
-    return std::nullopt;
+  const Eigen::MatrixXd force_from_s = stepper.forceMap(space, contacts, dynamics, stiffness);
+  const Eigen::MatrixXd delassus_times_g = space.delassus * force_from_s;
+  const Eigen::VectorXd velocity = dynamics.relativeVelocity(y0.data());
   bool sliding = false;
   for (std::size_t i = 0; i < contacts.size(); ++i)
-    sliding = sliding || slides(contacts[i], space, i);
+  {
+    if (!slides(contacts[i], space, i))
+      continue;
+    if (!directionFixed(i, space, dynamics, y0, velocity, delassus_times_g))
+      return std::nullopt;
+    sliding = true;
+  }
   // With rigid links G = Π E_R (−K), Π = 1 − B W_LL⁺ W_L, and W G = (W Π) E_R (−K) with W Π symmetric (the Schur
   // complement of the links in W) unless friction slides: then symmetry is checked, not assumed.
   const Eigen::Index n = space.size;
   const auto r = static_cast<Eigen::Index>(stepper.moving_rows_.size());
-  const Eigen::MatrixXd delassus_times_g = space.delassus * *force_from_s;
   Eigen::VectorXd sqrt_k(r);
   Eigen::MatrixXd reduced(r, r);  // (W Π)_RR
   for (Eigen::Index a = 0; a < r; ++a)
@@ -145,9 +143,8 @@ std::optional<LinearPhaseStepper> LinearPhaseStepper::tryBuild(const ContactSpac
     return std::nullopt;  // friction could make the springs grow without bound: left to the integrator
   stepper.omega_ = modes.eigenvalues().cwiseMax(0.0).cwiseSqrt();
   stepper.spring_from_modes_ = sqrt_k.cwiseInverse().asDiagonal() * modes.eigenvectors();
-  stepper.impulse_from_modes_ = *force_from_s * stepper.spring_from_modes_;
+  stepper.impulse_from_modes_ = force_from_s * stepper.spring_from_modes_;
 
-  const Eigen::VectorXd velocity = dynamics.relativeVelocity(y0.data());
   Eigen::VectorXd z(r), z_rate(r);
   for (Eigen::Index a = 0; a < r; ++a)
   {

@@ -46,9 +46,9 @@ public:
 
 private:
   LinearPhaseStepper(const OdeState& y0, double t0) : y0_(y0), t0_(t0), t_(t0), step_(0.0) {}
-  /// The force map G (F = G s_R over the moving springs), or nothing when a sliding direction could turn.
-  std::optional<Eigen::MatrixXd> forceMap(const ContactSpace& space, const std::vector<ContactState>& contacts,
-                                          const ContactDynamics& dynamics, std::vector<double>& stiffness);
+  /// Collects the moving springs (their rows and stiffnesses) and returns the force map G: F = G s_R.
+  Eigen::MatrixXd forceMap(const ContactSpace& space, const std::vector<ContactState>& contacts,
+                           const ContactDynamics& dynamics, std::vector<double>& stiffness);
 
   OdeState y0_;
   double t0_;
