@@ -9,12 +9,12 @@
 
 #include "billiard_shot_planner/impact/impact_result.hpp"
 #include "billiard_shot_planner/impact/solver_options.hpp"
+#include "billiard_shot_planner/motion/table.hpp"
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
 #include "billiard_shot_planner/scenarios/ball_chain.hpp"
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "billiard_shot_planner/scenarios/cushion_impact.hpp"
-#include "billiard_shot_planner/motion/table.hpp"
 
 namespace bench
 {
