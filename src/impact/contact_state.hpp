@@ -34,6 +34,8 @@ struct ContactState
 
   bool active() const { return phase != NormalPhase::Inactive; }
   bool compliant() const { return phase == NormalPhase::Compression || phase == NormalPhase::Restitution; }
+  /// Touching and sliding (only contacts with tangential rows ever slip).
+  bool sliding() const { return active() && slipping; }
   /// Current η² = k/κ; grows by 1/e² with k at every end of compression (spec §2.4).
   double eta2() const { return stiffness / kappa; }
 };

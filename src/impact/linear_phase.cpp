@@ -39,11 +39,6 @@ namespace
 /// Relative size below which a value is round-off of the values it was computed from.
 constexpr double ROUND_OFF = 1e-12;
 
-bool slides(const ContactState& contact, const ContactSpace& space, std::size_t i)
-{
-  return contact.active() && space.dim[i] == 3 && contact.slipping;
-}
-
 /// A sliding contact keeps its direction ŝ when its tangential velocity has no part across ŝ, now or ever: the
 /// rows of W G that would accelerate it across are zero (a ball alone on the table: its friction only changes the
 /// tangential velocity along itself). Otherwise ŝ turns and the dynamics is not linear.
@@ -116,7 +111,7 @@ std::optional<LinearPhaseStepper> LinearPhaseStepper::tryBuild(const ContactSpac
   bool sliding = false;
   for (std::size_t i = 0; i < contacts.size(); ++i)
   {
-    if (!slides(contacts[i], space, i))
+    if (!contacts[i].sliding())
       continue;
     if (!directionFixed(i, space, dynamics, y0, velocity, delassus_times_g))
       return std::nullopt;

@@ -64,7 +64,7 @@ public:
   {
     chooseRestingModes(dynamics_, y_, contacts_, space_);
     for (const ContactState& contact : contacts_)
-      result_.initially_slipping.push_back(contact.active() && contact.slipping);
+      result_.initially_slipping.push_back(contact.sliding());
     if (auto status = settle(); !status)
       return status.error();
     while (anyActive())

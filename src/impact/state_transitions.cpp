@@ -318,7 +318,7 @@ void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vecto
   }
   // Every contact that starts slipping (here, or the cue tip by its velocity) gets its direction carrier.
   for (std::size_t i = 0; i < contacts.size(); ++i)
-    if (contacts[i].active() && contacts[i].slipping)
+    if (contacts[i].sliding())
       startSlip(contacts[i], contacts[i].slip_direction, y.data(), space, i);
 }
 
