@@ -16,16 +16,9 @@ Status check(const BallTableImpact& b)
 
 ImpactProblem makeImpactProblem(const BallTableImpact& b)
 {
-  const double inertia = 0.4 * b.mass * b.radius * b.radius;
-  ImpactProblem problem;
-  problem.mass_matrix =
-      (Eigen::Matrix<double, 6, 1>() << b.mass, b.mass, b.mass, inertia, inertia, inertia).finished().asDiagonal();
-  problem.velocity.resize(6);
-  problem.velocity << b.velocity, b.angular_velocity;
-  // A = ball (contact point at −r ẑ), B = table; table axes as the contact frame.
-  const Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();
-  problem.contacts.push_back(makeContact("ball-table", pointVelocityRows(frame, -b.radius * Eigen::Vector3d::UnitZ()),
-                                         contactLaw(b.table, 1.0)));
+  ImpactProblem problem = freeBallProblem(b.mass, b.radius, b.velocity, b.angular_velocity);
+  // A = ball, B = table.
+  problem.contacts.push_back(makeContact("ball-table", clothContactRows(b.radius), contactLaw(b.table, 1.0)));
   return problem;
 }
 }  // namespace

@@ -6,20 +6,13 @@ namespace billiard_shot_planner
 {
 Expected<CushionImpactResult> solve(const CushionImpact& c, const SolverOptions& options)
 {
-  const double inertia = 0.4 * c.mass * c.radius * c.radius;
-  ImpactProblem problem;
-  problem.mass_matrix = Eigen::MatrixXd::Zero(6, 6);
-  problem.mass_matrix.diagonal() << c.mass, c.mass, c.mass, inertia, inertia, inertia;
-  problem.velocity.resize(6);
-  problem.velocity << c.velocity, c.angular_velocity;
+  ImpactProblem problem = freeBallProblem(c.mass, c.radius, c.velocity, c.angular_velocity);
   // A = ball, B = cushion: the contact point is at −R n̂ from the centre.
   const Eigen::Vector3d n = c.cushion_normal.normalized();
   problem.contacts.push_back(makeContact("ball-cushion", pointVelocityRows(contactFrame(n), -c.radius * n),
                                          contactLaw(c.cushion, c.stiffness_ratio)));
   if (c.on_cloth)
-    problem.contacts.push_back(
-        makeContact("ball-cloth", pointVelocityRows(Eigen::Matrix3d::Identity(), -c.radius * Eigen::Vector3d::UnitZ()),
-                    contactLaw(c.cloth, 1.0)));
+    problem.contacts.push_back(makeContact("ball-cloth", clothContactRows(c.radius), contactLaw(c.cloth, 1.0)));
   auto solved = solveMultipleImpact(problem, options);
   if (!solved)
     return solved.error();

@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 
 #include "billiard_shot_planner/impact/contact.hpp"
+#include "billiard_shot_planner/impact/impact_problem.hpp"
 
 namespace billiard_shot_planner
 {
@@ -35,6 +36,26 @@ inline Eigen::Matrix<double, 3, 6> pointVelocityRows(const Eigen::Matrix3d& fram
     rows.block<1, 3>(k, 3) = lever.cross(d).transpose();
   }
   return rows;
+}
+
+/// A free solid ball (inertia 2/5 m r²) as the body of an impact: mass matrix and generalised velocity (v, ω); the
+/// contacts are the scenario's.
+inline ImpactProblem freeBallProblem(double mass, double radius, const Eigen::Vector3d& velocity,
+                                     const Eigen::Vector3d& angular_velocity)
+{
+  const double inertia = 0.4 * mass * radius * radius;
+  ImpactProblem problem;
+  problem.mass_matrix =
+      (Eigen::Matrix<double, 6, 1>() << mass, mass, mass, inertia, inertia, inertia).finished().asDiagonal();
+  problem.velocity.resize(6);
+  problem.velocity << velocity, angular_velocity;
+  return problem;
+}
+
+/// Rows of the ball's lowest point, where it touches the cloth, in the table axes as the contact frame (normal ẑ).
+inline Eigen::Matrix<double, 3, 6> clothContactRows(double radius)
+{
+  return pointVelocityRows(Eigen::Matrix3d::Identity(), -radius * Eigen::Vector3d::UnitZ());
 }
 
 /// Friction and compliance of one kind of surface contact; its normal stiffness is set by the scenario.
