@@ -41,11 +41,18 @@ public:
   Eigen::Vector2d springDirection(std::size_t contact, const double* y) const;
 
   /// Right-hand side for Boost.Odeint.
-  void operator()(const OdeState& y, OdeState& dydt, double /*t*/) const;
+  void operator()(const OdeState& y, OdeState& dydt, double /*t*/) const { rates(y.data(), dydt.data()); }
+  /// The same on raw arrays. Returns Σ ρ̇/ρ over the sliding contacts in restitution, the relative rate at which
+  /// their spring length on the friction cone, ρ = μF_n/κ, shrinks: about 1/τ, τ the time left to their
+  /// separation (see SeparationClockStepper).
+  double rates(const double* y, double* dydt) const;
 
 private:
   void springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w, const Eigen::VectorXd& force,
                    double* rates) const;
+  /// Spring length of a sliding contact on its friction cone, ρ = μF_n/κ, bounded below (smoothly) where the
+  /// spring vanishes.
+  double coneLength(std::size_t contact, const Eigen::VectorXd& force) const;
   /// Forces of the springs alone (rigid-link normals and sliding-link friction left at zero).
   void springForces(const double* y, Eigen::VectorXd& force) const;
   void addLinkForces(const double* y, Eigen::VectorXd& force) const;

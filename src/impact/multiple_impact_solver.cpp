@@ -1,15 +1,14 @@
 #include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
 
-#include "fast_binomial.hpp"  // before Odeint
-
+#include <algorithm>
 #include <boost/math/tools/toms748_solve.hpp>
-#include <boost/numeric/odeint.hpp>
-#include <functional>
+#include <cmath>
 #include <limits>
 
 #include "contact_dynamics.hpp"
 #include "contact_space.hpp"
 #include "linear_phase.hpp"
+#include "separation_clock.hpp"
 #include "state_transitions.hpp"
 
 namespace billiard_shot_planner
@@ -18,14 +17,12 @@ namespace detail
 {
 namespace
 {
-namespace odeint = boost::numeric::odeint;
-/// Bulirsch–Stoer extrapolation with dense output: between events the spring dynamics is smooth (analytic), so a
-/// high-order method reaches 1e-12 in far fewer steps than a fifth-order Runge–Kutta.
-using DenseStepper = odeint::bulirsch_stoer_dense_out<OdeState>;
-
 /// Guard samples per integrator step: with steps bounded by a fraction of the fastest contact period this
 /// catches transitions that fire and reset within one step.
 constexpr int SAMPLES_PER_STEP = 4;
+/// Bound on how many times a step's guard sampling is refined (a step of the separation clock spanning many
+/// periods; it only happens where the clock runs at nearly physical speed).
+constexpr double MAX_STEP_SUBDIVISION = 64.0;
 
 /// Closed-form steps, in radians of the fastest mode: the guards are sums of sines of at most that frequency, so
 /// with SAMPLES_PER_STEP samples a step sees any crossing pair more than a quarter radian apart. Finer when the
@@ -175,8 +172,16 @@ private:
     return std::sqrt(std::max(trace, std::numeric_limits<double>::min()));
   }
 
+  bool slidingContactInRestitution() const
+  {
+    for (const ContactState& contact : contacts_)
+      if (contact.slipping && contact.phase == NormalPhase::Restitution)
+        return true;
+    return false;
+  }
+
   /// Integrates to the next transition: in closed form where the dynamics is linear (no sliding direction can
-  /// turn), otherwise with Bulirsch–Stoer.
+  /// turn), otherwise with Bulirsch–Stoer, on the separation clock while a sliding contact may separate.
   Expected<bool> advanceToNextEvent()
   {
     if (options_.closed_form_linear_phases)
@@ -184,10 +189,16 @@ private:
               space_, contacts_, dynamics_, y_, t_,
               options_.record_samples ? RADIANS_PER_RECORDED_STEP : RADIANS_PER_CLOSED_FORM_STEP))
         return advanceWith(*stepper);
-    const double omega = fastestFrequency();
-    DenseStepper stepper(options_.absolute_tolerance, options_.relative_tolerance, 1.0, 1.0, 0.5 / omega,
-                         /*control_interpolation=*/true);
-    stepper.initialize(y_, t_, 0.01 / omega);
+    omega_ = fastestFrequency();
+    IntegrationSettings settings{options_.absolute_tolerance, options_.relative_tolerance, 0.5 / omega_, 0.01 / omega_};
+    if (options_.separation_clock && slidingContactInRestitution())
+    {
+      settings.max_step = 0.0;  // unbounded in u: guardSamples subdivides long steps instead
+      SeparationClockStepper stepper(dynamics_, y_, t_, settings);
+      return advanceWith(stepper);
+    }
+    DenseStepper stepper = makeDenseStepper(settings);
+    stepper.initialize(y_, t_, settings.first_step);
     return advanceWith(stepper);
   }
 
@@ -196,6 +207,7 @@ private:
   {
     std::vector<Guard> guards = armedGuards(contacts_, space_);
     guard_values_.resize(SAMPLES_PER_STEP + 1, static_cast<Eigen::Index>(guards.size()));
+    samples_ = SAMPLES_PER_STEP;
     bool first_row_known = false;  // a step's first sample is the previous step's last
     while (true)
     {
@@ -203,18 +215,20 @@ private:
         return Error{ErrorCode::StepLimitExceeded, "",
                      "the impact did not end within " + std::to_string(options_.max_steps) + " integrator steps"};
       const auto [t0, t1] = stepper.do_step(std::cref(dynamics_));
+      samples_ = guardSamples(stepper, t0, t1);
+      guard_values_.conservativeResize(samples_ + 1, Eigen::NoChange);
       sampleGuards(stepper, guards, t0, t1, first_row_known);
       std::vector<FiredGuard> fired = firedGuards(stepper, guards, t0, t1);
       if (fired.empty())
       {
         recordSamples(stepper, t0, t1);
-        guard_values_.row(0) = guard_values_.row(SAMPLES_PER_STEP);
+        guard_values_.row(0) = guard_values_.row(samples_);
         first_row_known = true;
         continue;
       }
       recordSamples(stepper, t0, fired.front().time);
       stepper.calc_state(fired.front().time, y_);
-      t_ = fired.front().time;
+      t_ = physicalTime(stepper, fired.front().time);
       for (const FiredGuard& f : fired)
         if (auto status = fire(f.guard); !status)
           return status.error();
@@ -230,11 +244,11 @@ private:
   {
     if (!options_.record_samples)
       return;
-    for (int k = 1; k <= SAMPLES_PER_STEP; ++k)
+    for (int k = 1; k <= samples_; ++k)
     {
-      const double t = t0 + (t1 - t0) * k / SAMPLES_PER_STEP;
+      const double t = sampleTime(t0, t1, k);
       stepper.calc_state(t, buffer_);
-      result_.samples.push_back(snapshot(buffer_.data(), t));
+      result_.samples.push_back(snapshot(buffer_.data(), physicalTime(stepper, t)));
     }
   }
 
@@ -252,7 +266,7 @@ private:
   void sampleGuards(const Stepper& stepper, const std::vector<Guard>& guards, double t0, double t1,
                     bool first_row_known) const
   {
-    for (int k = first_row_known ? 1 : 0; k <= SAMPLES_PER_STEP; ++k)
+    for (int k = first_row_known ? 1 : 0; k <= samples_; ++k)
     {
       stepper.calc_state(sampleTime(t0, t1, k), buffer_);
       evaluateKinematics(dynamics_, buffer_.data(), kinematics_buffer_);
@@ -262,9 +276,20 @@ private:
     }
   }
 
-  static double sampleTime(double t0, double t1, int k)
+  double sampleTime(double t0, double t1, int k) const { return k == samples_ ? t1 : t0 + (t1 - t0) * k / samples_; }
+
+  /// Guard samples for a step: SAMPLES_PER_STEP per half radian of the fastest mode in physical time. Only the
+  /// separation clock's steps can be longer (their length in u is not bounded in t).
+  template <class Stepper>
+  int guardSamples(const Stepper& /*stepper*/, double /*t0*/, double /*t1*/) const
   {
-    return k == SAMPLES_PER_STEP ? t1 : t0 + (t1 - t0) * k / SAMPLES_PER_STEP;
+    return SAMPLES_PER_STEP;
+  }
+
+  int guardSamples(const SeparationClockStepper& stepper, double u0, double u1) const
+  {
+    const double half_radians = 2.0 * omega_ * (stepper.timeAt(u1) - stepper.timeAt(u0));
+    return SAMPLES_PER_STEP * static_cast<int>(std::clamp(std::ceil(half_radians), 1.0, MAX_STEP_SUBDIVISION));
   }
 
   /// The earliest guard to rise through zero in [t0, t1] (from the samples in guard_values_), with every other one
@@ -278,7 +303,7 @@ private:
     for (std::size_t g = 0; g < guards.size(); ++g)
     {
       const auto column = static_cast<Eigen::Index>(g);
-      for (int k = 0; k < SAMPLES_PER_STEP; ++k)
+      for (int k = 0; k < samples_; ++k)
       {
         const double ga = values(k, column), gb = values(k + 1, column);
         if (ga <= 0.0 && gb > 0.0)
@@ -346,6 +371,8 @@ private:
   mutable OdeState buffer_;  ///< scratch state for dense-output evaluations
   mutable Kinematics kinematics_buffer_{};
   mutable Eigen::MatrixXd guard_values_;  ///< guard samples of the current step: instants × guards
+  int samples_ = SAMPLES_PER_STEP;        ///< guard samples of the current step
+  double omega_ = 1.0;                    ///< fastest angular frequency of the current state
   double t_ = 0.0;
   std::size_t event_count_ = 0;
   std::size_t step_count_ = 0;

@@ -22,6 +22,9 @@ struct SolverOptions
   /// Solve states in which no active contact slides (frictionless or sticking contacts: linear spring dynamics) in
   /// closed form, exact to round-off; off, every state is integrated numerically (for cross-checks).
   bool closed_form_linear_phases = true;
+  /// Integrate on a clock that slows down as sliding contacts approach separation, where their slip direction has a
+  /// weak singularity that costs explicit steps in proportion to the time left (off: plain time, for cross-checks).
+  bool separation_clock = true;
 };
 
 }  // namespace billiard_shot_planner
