@@ -1,5 +1,6 @@
 #include "contact_dynamics.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace billiard_shot_planner
@@ -32,9 +33,14 @@ ContactDynamics::ContactDynamics(const ContactSpace& space, const std::vector<Co
 void ContactDynamics::refresh()
 {
   rigid_contacts_.clear();
+  any_quasi_steady_ = false;
   for (std::size_t i = 0; i < contacts_.size(); ++i)
+  {
     if (contacts_[i].phase == NormalPhase::RigidLink)
       rigid_contacts_.push_back(i);
+    any_quasi_steady_ = any_quasi_steady_ || (contacts_[i].sliding() && contacts_[i].quasi_steady);
+  }
+  directions_.resize(contacts_.size());
 }
 
 Eigen::VectorXd ContactDynamics::relativeVelocity(const double* y) const
@@ -67,7 +73,7 @@ void ContactDynamics::springForces(const double* y, Eigen::VectorXd& force) cons
     else if (contact.compliant())
       // Sliding: friction on the cone, −μ F_n ŝ. Equal to −κ s_t on the exact solution, but bounded by the cone
       // even where the spring shrinks to nothing at separation and its integrated length loses accuracy.
-      force.segment<2>(row + 1) = -contact.friction * force(row) * springDirection(i, y);
+      force.segment<2>(row + 1) = -contact.friction * force(row) * directions_[i];
   }
 }
 
@@ -80,12 +86,55 @@ Eigen::VectorXd ContactDynamics::forces(const double* y) const
 
 void ContactDynamics::forces(const double* y, Eigen::VectorXd& force) const
 {
-  springForces(y, force);
-  if (!rigid_contacts_.empty())
-    addLinkForces(y, force);
+  for (std::size_t i = 0; i < contacts_.size(); ++i)
+    if (contacts_[i].sliding())
+      directions_[i] = carrierDirection(i, y);
+  if (any_quasi_steady_)
+    followSlip(y, force);
+  forcesAlongDirections(y, force);
 }
 
-void ContactDynamics::addLinkForces(const double* y, Eigen::VectorXd& force) const
+void ContactDynamics::forcesAlongDirections(const double* y, Eigen::VectorXd& force) const
+{
+  springForces(y, force);
+  if (!rigid_contacts_.empty())
+    addLinkForces(force);
+}
+
+void ContactDynamics::followSlip(const double* y, Eigen::VectorXd& force) const
+{
+  // Zeroth order: along the slip. Then the lag that keeps ρθ̇ = |v_t| sin(ψ − θ) with θ̇ = ψ̇, the turning rate of
+  // v_t under the forces of that first guess: sin δ = ρψ̇/|v_t|. The error left is of order ρ² in the direction
+  // and ρ³ in the force (μF_n = κρ).
+  relativeVelocity(y, follow_velocity_);
+  for (std::size_t i = 0; i < contacts_.size(); ++i)
+    if (contacts_[i].sliding() && contacts_[i].quasi_steady)
+    {
+      const Eigen::Vector2d v_t = follow_velocity_.segment<2>(space_.offset[i] + 1);
+      if (v_t.norm() > 0.0)
+        directions_[i] = v_t.normalized();
+    }
+  forcesAlongDirections(y, force);
+  for (std::size_t i = 0; i < contacts_.size(); ++i)
+  {
+    if (!contacts_[i].sliding() || !contacts_[i].quasi_steady)
+      continue;
+    const int row = space_.offset[i];
+    const Eigen::Vector2d v_t = follow_velocity_.segment<2>(row + 1);
+    const double speed = v_t.norm();
+    if (speed == 0.0)
+      continue;
+    const Eigen::Vector2d a_t(space_.delassus.row(row + 1).dot(force), space_.delassus.row(row + 2).dot(force));
+    const double turn_rate = (v_t.x() * a_t.y() - v_t.y() * a_t.x()) / (speed * speed);
+    const double sin_lag = std::clamp(coneLength(i, force) * turn_rate / speed, -1.0, 1.0);
+    const double cos_lag = std::sqrt(1.0 - sin_lag * sin_lag);
+    const Eigen::Vector2d along = v_t / speed;
+    directions_[i] =
+        Eigen::Vector2d(cos_lag * along.x() + sin_lag * along.y(), cos_lag * along.y() - sin_lag * along.x());
+  }
+}
+
+void ContactDynamics::addLinkForces(Eigen::VectorXd& force) const
 {
   // Rigid links: unknown normal forces f keep their normal velocities constant (zero), (W F)_n = 0. A sliding
   // link's friction, −μ f ŝ, depends on its own unknown, so each link contributes a column B_r of F = F_s + B f.
@@ -97,7 +146,7 @@ void ContactDynamics::addLinkForces(const double* y, Eigen::VectorXd& force) con
     const int row = space_.offset[i];
     basis(row, r) = 1.0;
     if (contacts_[i].slipping)
-      basis.block<2, 1>(row + 1, r) = -contacts_[i].friction * springDirection(i, y);
+      basis.block<2, 1>(row + 1, r) = -contacts_[i].friction * directions_[i];
   }
   Eigen::MatrixXd normal_rows(links, space_.size);
   for (Eigen::Index r = 0; r < links; ++r)
@@ -121,6 +170,15 @@ double ContactDynamics::strainEnergy(std::size_t contact, const double* y) const
 }
 
 Eigen::Vector2d ContactDynamics::springDirection(std::size_t contact, const double* y) const
+{
+  const ContactState& state = contacts_[contact];
+  if (!state.sliding() || !state.quasi_steady)
+    return carrierDirection(contact, y);
+  forces(y, follow_force_);
+  return directions_[contact];
+}
+
+Eigen::Vector2d ContactDynamics::carrierDirection(std::size_t contact, const double* y) const
 {
   const double* s = y + space_.size + space_.offset[contact];
   const Eigen::Vector2d tangential(s[1], s[2]);
@@ -158,6 +216,8 @@ void ContactDynamics::springRates(std::size_t contact, const double* y, const Ei
     tangential_rate = v_t;  // stick: the contact particle is at rest on B (spec §2.6)
     return;
   }
+  if (state.quasi_steady)
+    return;  // the direction follows the slip (followSlip); the carrier waits for the release
   // Slip: ṡ_t = v_t − σŝ (spec §2.6), whose radial part only keeps |s_t| = μη²|s_n| on the cone. The friction is
   // −μF_nŝ, so only the direction ŝ matters: the state carries it at a fixed length (never through zero, where it
   // would flip) and turns it at the physical rate |(I − ŝŝᵀ)v_t| / ρ, with ρ = μF_n/κ the cone's spring length,

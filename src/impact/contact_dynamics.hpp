@@ -37,7 +37,7 @@ public:
   double strainEnergy(std::size_t contact, const double* y) const;
   /// Sliding speed σ = ŝ·v_t + μη²v_n of a slipping contact's particle (spec §2.6).
   double slidingSpeed(std::size_t contact, const double* y, const Eigen::VectorXd& w) const;
-  /// Unit direction of the tangential spring, or the stored slip direction while it is relaxed.
+  /// Slip direction ŝ of a sliding contact: its carrier's, or the quasi-steady one while it follows the slip.
   Eigen::Vector2d springDirection(std::size_t contact, const double* y) const;
 
   /// Right-hand side for Boost.Odeint.
@@ -53,14 +53,24 @@ private:
   /// Spring length of a sliding contact on its friction cone, ρ = μF_n/κ, bounded below (smoothly) where the
   /// spring vanishes.
   double coneLength(std::size_t contact, const Eigen::VectorXd& force) const;
+  /// Unit direction of the tangential spring, or the stored slip direction while it is relaxed.
+  Eigen::Vector2d carrierDirection(std::size_t contact, const double* y) const;
+  /// Sets directions_ of the contacts that follow their slip (ContactState::quasi_steady); force is scratch.
+  void followSlip(const double* y, Eigen::VectorXd& force) const;
+  /// Forces with the sliding contacts' friction along directions_.
+  void forcesAlongDirections(const double* y, Eigen::VectorXd& force) const;
   /// Forces of the springs alone (rigid-link normals and sliding-link friction left at zero).
   void springForces(const double* y, Eigen::VectorXd& force) const;
-  void addLinkForces(const double* y, Eigen::VectorXd& force) const;
+  void addLinkForces(Eigen::VectorXd& force) const;
 
   const ContactSpace& space_;
   const std::vector<ContactState>& contacts_;
   std::vector<std::size_t> rigid_contacts_;
-  mutable Eigen::VectorXd velocity_scratch_;  ///< for operator(), called by the integrator
+  bool any_quasi_steady_ = false;
+  mutable std::vector<Eigen::Vector2d> directions_;  ///< slip directions of the last force evaluation
+  mutable Eigen::VectorXd follow_velocity_;          ///< scratch of followSlip
+  mutable Eigen::VectorXd follow_force_;             ///< scratch of springDirection
+  mutable Eigen::VectorXd velocity_scratch_;         ///< for operator(), called by the integrator
   mutable Eigen::VectorXd force_scratch_;
 };
 

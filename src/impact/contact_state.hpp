@@ -31,6 +31,10 @@ struct ContactState
   double restitution = 1.0;
   double friction = 0.0;
   Eigen::Vector2d slip_direction = Eigen::Vector2d::UnitX();  ///< used while the tangential spring is relaxed
+  /// While sliding from a relaxed start, the slip direction follows the tangential velocity with its quasi-steady lag
+  /// instead of being integrated: the cone's spring ρ = μF_n/κ is then so short that the direction relaxes far
+  /// faster than anything else moves (|v_t|/ρ), a stiff equation. Released once ρ reaches QUASI_STEADY_CONE_LENGTH.
+  bool quasi_steady = false;
 
   bool active() const { return phase != NormalPhase::Inactive; }
   bool compliant() const { return phase == NormalPhase::Compression || phase == NormalPhase::Restitution; }

@@ -4,6 +4,7 @@
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "contact_dynamics.hpp"
 #include "contact_space.hpp"
@@ -121,8 +122,24 @@ private:
     return {};
   }
 
+  /// The contact's slip direction is integrated from now on, starting where it was following the slip.
+  void releaseDirection(std::size_t contact)
+  {
+    const Eigen::Vector2d direction = dynamics_.springDirection(contact, y_.data());
+    contacts_[contact].quasi_steady = false;
+    double* carrier = y_.data() + space_.size + space_.offset[contact] + 1;
+    carrier[0] = direction.x();
+    carrier[1] = direction.y();
+    dynamics_.refresh();
+  }
+
   Status fire(const Guard& guard)
   {
+    if (guard.releases_direction)
+    {
+      releaseDirection(guard.contact);
+      return {};
+    }
     if (auto status = countEvent(); !status)
       return status;
     const Kinematics kinematics = evaluateKinematics(dynamics_, y_.data());
@@ -135,8 +152,19 @@ private:
   }
 
   /// Fires every transition due at the current instant, then records the state if the active set changed.
+  /// With SolverOptions::quasi_steady_slip off, every slip direction is integrated from its start.
+  void integrateEverySlipDirection()
+  {
+    if (options_.quasi_steady_slip)
+      return;
+    for (std::size_t i = 0; i < contacts_.size(); ++i)
+      if (contacts_[i].quasi_steady)
+        releaseDirection(i);
+  }
+
   Status settle()
   {
+    integrateEverySlipDirection();
     dynamics_.refresh();
     // A contact whose rigid-link force and grazing acceleration disagree in sign (friction coupling, as in
     // Painlevé's paradox) could switch forever at one instant: after a few switches it is left as it is, and its
@@ -149,6 +177,7 @@ private:
         return status;
       settled[guard->contact] = ++switches[guard->contact] >= MAX_SWITCHES_PER_INSTANT;
     }
+    integrateEverySlipDirection();
     std::vector<std::size_t> active = activeSet();
     if (result_.states.empty() || result_.states.back().active != active)
       result_.states.push_back({std::move(active), snapshot(y_.data(), t_)});
@@ -172,6 +201,28 @@ private:
     return std::sqrt(std::max(trace, std::numeric_limits<double>::min()));
   }
 
+  /// The closed form holds slip directions fixed. A contact following its slip joins it only when its direction
+  /// cannot turn, and then releasing it is exact; otherwise it keeps following.
+  std::optional<LinearPhaseStepper> tryClosedForm()
+  {
+    std::vector<std::size_t> following;
+    for (std::size_t i = 0; i < contacts_.size(); ++i)
+      if (contacts_[i].sliding() && contacts_[i].quasi_steady)
+        following.push_back(i);
+    for (std::size_t i : following)
+      releaseDirection(i);
+    auto stepper = LinearPhaseStepper::tryBuild(
+        space_, contacts_, dynamics_, y_, t_,
+        options_.record_samples ? RADIANS_PER_RECORDED_STEP : RADIANS_PER_CLOSED_FORM_STEP);
+    if (!stepper && !following.empty())
+    {
+      for (std::size_t i : following)
+        contacts_[i].quasi_steady = true;
+      dynamics_.refresh();
+    }
+    return stepper;
+  }
+
   bool slidingContactInRestitution() const
   {
     for (const ContactState& contact : contacts_)
@@ -185,9 +236,7 @@ private:
   Expected<bool> advanceToNextEvent()
   {
     if (options_.closed_form_linear_phases)
-      if (auto stepper = LinearPhaseStepper::tryBuild(
-              space_, contacts_, dynamics_, y_, t_,
-              options_.record_samples ? RADIANS_PER_RECORDED_STEP : RADIANS_PER_CLOSED_FORM_STEP))
+      if (auto stepper = tryClosedForm())
         return advanceWith(*stepper);
     omega_ = fastestFrequency();
     IntegrationSettings settings{options_.absolute_tolerance, options_.relative_tolerance, 0.5 / omega_, 0.01 / omega_};

@@ -29,6 +29,7 @@ void chooseInitialMode(ContactState& contact, const Eigen::VectorXd& velocity, c
                        std::size_t index)
 {
   contact.slipping = false;
+  contact.quasi_steady = false;
   if (space.dim[index] != 3)
     return;
   const int row = space.offset[index];
@@ -127,7 +128,10 @@ std::vector<ContactEventType> activate(std::size_t index, const Kinematics& kine
   contact.phase = contact.rigid ? NormalPhase::RigidLink : NormalPhase::Compression;
   chooseInitialMode(contact, kinematics.velocity, space, index);
   if (contact.slipping)
+  {
     startSlip(contact, contact.slip_direction, y, space, index);
+    contact.quasi_steady = true;  // from a relaxed spring
+  }
   return {ContactEventType::Reactivation};
 }
 }  // namespace
@@ -169,6 +173,8 @@ std::vector<Guard> armedGuards(const std::vector<ContactState>& contacts, const 
     }
     if (space.dim[i] == 3)
       guards.push_back({i, contacts[i].slipping ? ContactEventType::SlipToStick : ContactEventType::StickToSlip});
+    if (contacts[i].sliding() && contacts[i].quasi_steady)
+      guards.push_back({i, ContactEventType::StickToSlip, /*releases_direction=*/true});
   }
   return guards;
 }
@@ -179,6 +185,8 @@ double guardValue(const Guard& guard, const Kinematics& kinematics, const std::v
   const int row = space.offset[guard.contact];
   const double* s = kinematics.y + space.size + row;
   const ContactState& contact = contacts[guard.contact];
+  if (guard.releases_direction)
+    return contact.friction * kinematics.force(row) / contact.kappa - QUASI_STEADY_CONE_LENGTH;
   switch (guard.type)
   {
     case ContactEventType::EndOfCompression:
@@ -218,6 +226,7 @@ std::vector<ContactEventType> applyTransition(const Guard& guard, const Kinemati
     case ContactEventType::LinkRelease:
       contact.phase = NormalPhase::Inactive;
       contact.slipping = false;
+      contact.quasi_steady = false;
       relaxSprings(y, space, guard.contact);
       break;
     case ContactEventType::Reactivation:
@@ -233,6 +242,7 @@ std::vector<ContactEventType> applyTransition(const Guard& guard, const Kinemati
     }
     case ContactEventType::SlipToStick:
       contact.slipping = false;
+      contact.quasi_steady = false;
       {
         // While sliding the friction came from the normal force; from now on the spring holds that force.
         double* spring = springs(y, space, guard.contact);
@@ -317,9 +327,13 @@ void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vecto
       contacts[i].slip_direction = j_t.normalized();
   }
   // Every contact that starts slipping (here, or the cue tip by its velocity) gets its direction carrier.
+  // All springs are relaxed at the start, so they all follow their slip at first.
   for (std::size_t i = 0; i < contacts.size(); ++i)
     if (contacts[i].sliding())
+    {
       startSlip(contacts[i], contacts[i].slip_direction, y.data(), space, i);
+      contacts[i].quasi_steady = true;
+    }
 }
 
 std::vector<ContactState> initialContactStates(const ImpactProblem& problem, const ContactSpace& space)

@@ -19,7 +19,14 @@ struct Guard
 {
   std::size_t contact;
   ContactEventType type;
+  /// Not a transition of the diagram but of the numerics: a contact's slip direction stops following the slip
+  /// (ContactState::quasi_steady) and is integrated from then on. Logged as no event.
+  bool releases_direction = false;
 };
+
+/// Cone spring length (dimensionless) up to which a contact that started sliding from a relaxed spring keeps its
+/// quasi-steady slip direction. The lag's first-order formula leaves errors of order ρ³ in its friction.
+constexpr double QUASI_STEADY_CONE_LENGTH = 1e-4;
 
 /// Values that every guard evaluation at one instant shares.
 struct Kinematics

@@ -25,6 +25,12 @@ struct SolverOptions
   /// Integrate on a clock that slows down as sliding contacts approach separation, where their slip direction has a
   /// weak singularity that costs explicit steps in proportion to the time left (off: plain time, for cross-checks).
   bool separation_clock = true;
+  /// A contact that starts sliding from relaxed springs (a landing, the cloth under a cushion hit, a reactivation)
+  /// has so short a spring on its friction cone that its slip direction relaxes almost at once: it follows the
+  /// slip with its first-order quasi-steady lag until the cone length reaches 1e-4 (error of order 1e-12), and is
+  /// integrated from then on. Off, the direction is integrated from the start, a stiff equation that the explicit
+  /// integrator follows only in tiny steps and, at small loads, not always stably (for cross-checks).
+  bool quasi_steady_slip = true;
 };
 
 }  // namespace billiard_shot_planner

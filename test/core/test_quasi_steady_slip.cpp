@@ -1,0 +1,96 @@
+// Slip directions that follow the slip (ContactState::quasi_steady, SolverOptions::quasi_steady_slip) against the
+// same contacts with every slip direction integrated from its start, at tolerance 1e-13: same state sequence and
+// final velocities to 1e-10 (m/s, rad/s), on cushion hits where the cloth is loaded from zero while the ball slides
+// and on landings that slide from their first instant.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "billiard_shot_planner/motion/table.hpp"
+#include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
+#include "billiard_shot_planner/scenarios/cushion_impact.hpp"
+
+namespace bsp = billiard_shot_planner;
+
+namespace
+{
+bsp::SolverOptions integratedFromTheStart()
+{
+  bsp::SolverOptions options;
+  options.quasi_steady_slip = false;
+  options.relative_tolerance = 1e-13;
+  options.absolute_tolerance = 1e-15;
+  return options;
+}
+
+void expectSameSolution(const bsp::ImpactResult& following, const bsp::ImpactResult& integrated,
+                        const std::string& name)
+{
+  ASSERT_EQ(following.events.size(), integrated.events.size()) << name;
+  for (std::size_t k = 0; k < following.events.size(); ++k)
+  {
+    EXPECT_EQ(following.events[k].type, integrated.events[k].type) << name << " event " << k;
+    EXPECT_EQ(following.events[k].contact, integrated.events[k].contact) << name << " event " << k;
+  }
+  EXPECT_LT((following.velocity - integrated.velocity).cwiseAbs().maxCoeff(), 1e-10) << name;
+}
+}  // namespace
+
+TEST(QuasiSteadySlip, CushionHitsOnTheClothMatchIntegration)
+{
+  const bsp::Table table;
+  for (double nz : {-0.15, -0.269, -0.35})  // cushion nose above the centre: it presses the ball into the cloth
+    for (double spin_z : {0.0, 20.0})
+    {
+      bsp::CushionImpact hit;
+      hit.velocity = {1.5, 0.8, 0.0};
+      hit.angular_velocity = {-10.0, 30.0, spin_z};
+      hit.cushion_normal = Eigen::Vector3d(-std::sqrt(1.0 - nz * nz), 0.0, nz);
+      hit.cushion = table.cushion;
+      hit.cloth = table.cloth;
+      const auto following = bsp::solve(hit);
+      const auto integrated = bsp::solve(hit, integratedFromTheStart());
+      const std::string name = "cushion n_z " + std::to_string(nz) + " spin " + std::to_string(spin_z);
+      ASSERT_TRUE(following.ok() && integrated.ok()) << name;
+      EXPECT_TRUE(following.value().impact.initially_slipping[1]) << name;  // the cloth slides from the start
+      expectSameSolution(following.value().impact, integrated.value().impact, name);
+    }
+}
+
+TEST(QuasiSteadySlip, SlidingLandingsMatchIntegration)
+{
+  bsp::BallTableImpact landing;  // after the massé jump: slides throughout (closed form)
+  landing.mass = 0.17;
+  landing.radius = 0.0286;
+  landing.velocity = {-2.07, 0.24, -0.4};
+  landing.angular_velocity = {11.6, 25.3, -6.15};
+  landing.table = {0.51625, 0.152479, 10.0};
+  auto integrated = bsp::solve(landing, integratedFromTheStart());
+  ASSERT_TRUE(integrated.ok());
+  expectSameSolution(bsp::solve(landing).value().impact, integrated.value().impact, "sliding landing");
+  landing.velocity = {2.9, 0.5, -1.5};  // slides, sticks and slides again
+  landing.angular_velocity = {0.0, 0.0, 0.0};
+  landing.table = {0.5, 0.6, 3.0};
+  integrated = bsp::solve(landing, integratedFromTheStart());
+  ASSERT_TRUE(integrated.ok());
+  expectSameSolution(bsp::solve(landing).value().impact, integrated.value().impact, "slide, stick, slide");
+}
+
+TEST(QuasiSteadySlip, IsOnlyANumericalDevice)
+{
+  // The same cushion hit with the integrator alone (no closed form, no separation clock): the slip directions that
+  // followed the slip leave no trace in the events the solver reports.
+  bsp::CushionImpact hit;
+  hit.velocity = {1.5, 0.8, 0.0};
+  hit.cushion_normal = Eigen::Vector3d(-0.963, 0.0, -0.269).normalized();
+  hit.cushion = bsp::Table{}.cushion;
+  hit.cloth = bsp::Table{}.cloth;
+  bsp::SolverOptions options;
+  options.closed_form_linear_phases = false;
+  options.separation_clock = false;
+  const auto following = bsp::solve(hit, options);
+  const auto integrated = bsp::solve(hit, integratedFromTheStart());
+  ASSERT_TRUE(following.ok() && integrated.ok());
+  expectSameSolution(following.value().impact, integrated.value().impact, "integrator alone");
+}
