@@ -55,6 +55,18 @@ void BM_CushionHit(benchmark::State& state)
   solveRepeatedly(state, bench::cushionHit());
 }
 
+/// The massé strike and the cushion hit as the integrator alone solves them in plain time: what the separation
+/// clock and the quasi-steady slip save.
+void BM_MassePlainTime(benchmark::State& state)
+{
+  bench::timeSolves(state, bsp::paperMasseStrike(), bench::plainIntegration(std::pow(10.0, -double(state.range(0)))));
+}
+
+void BM_CushionHitPlainTime(benchmark::State& state)
+{
+  bench::timeSolves(state, bench::cushionHit(), bench::plainIntegration(std::pow(10.0, -double(state.range(0)))));
+}
+
 /// A sliding ball on a 9-ft table without pockets that hits three cushions (hopping after each) before it stops.
 void BM_TrajectoryThreeCushions(benchmark::State& state)
 {
@@ -119,5 +131,7 @@ BENCHMARK(BM_ElasticChain10)->Arg(12)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MasseStrike)->Arg(8)->Arg(10)->Arg(12)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Landing)->Arg(12)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_LandingIntegrated)->Arg(12)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MassePlainTime)->Arg(12)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CushionHit)->Arg(8)->Arg(12)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_CushionHitPlainTime)->Arg(12)->Unit(benchmark::kMicrosecond);
 BENCHMARK_MAIN();

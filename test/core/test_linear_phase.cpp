@@ -12,6 +12,7 @@
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "billiard_shot_planner/scenarios/cushion_impact.hpp"
+#include "same_solution.hpp"
 
 namespace bsp = billiard_shot_planner;
 
@@ -26,38 +27,10 @@ bsp::SolverOptions numerical()
   return options;
 }
 
-const bsp::ImpactResult& impactOf(const bsp::ImpactResult& r)
-{
-  return r;
-}
-const bsp::ImpactResult& impactOf(const bsp::BallTableImpactResult& r)
-{
-  return r.impact;
-}
-const bsp::ImpactResult& impactOf(const bsp::CueStrikeResult& r)
-{
-  return r.impact;
-}
-const bsp::ImpactResult& impactOf(const bsp::CushionImpactResult& r)
-{
-  return r.impact;
-}
-
 template <class Problem>
 void expectSameSolution(const Problem& problem, const char* name)
 {
-  const auto closed = bsp::solve(problem);
-  const auto integrated = bsp::solve(problem, numerical());
-  ASSERT_TRUE(closed.ok() && integrated.ok()) << name;
-  const bsp::ImpactResult& a = impactOf(closed.value());
-  const bsp::ImpactResult& b = impactOf(integrated.value());
-  ASSERT_EQ(a.events.size(), b.events.size()) << name;
-  for (std::size_t k = 0; k < a.events.size(); ++k)
-  {
-    EXPECT_EQ(a.events[k].type, b.events[k].type) << name << " event " << k;
-    EXPECT_EQ(a.events[k].contact, b.events[k].contact) << name << " event " << k;
-  }
-  EXPECT_LT((a.velocity - b.velocity).cwiseAbs().maxCoeff(), 1e-9) << name;
+  same_solution::expectSameSolution(problem, bsp::SolverOptions{}, numerical(), 1e-9, name);
 }
 }  // namespace
 

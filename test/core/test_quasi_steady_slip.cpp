@@ -10,6 +10,7 @@
 #include "billiard_shot_planner/motion/table.hpp"
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 #include "billiard_shot_planner/scenarios/cushion_impact.hpp"
+#include "same_solution.hpp"
 
 namespace bsp = billiard_shot_planner;
 
@@ -27,13 +28,7 @@ bsp::SolverOptions integratedFromTheStart()
 void expectSameSolution(const bsp::ImpactResult& following, const bsp::ImpactResult& integrated,
                         const std::string& name)
 {
-  ASSERT_EQ(following.events.size(), integrated.events.size()) << name;
-  for (std::size_t k = 0; k < following.events.size(); ++k)
-  {
-    EXPECT_EQ(following.events[k].type, integrated.events[k].type) << name << " event " << k;
-    EXPECT_EQ(following.events[k].contact, integrated.events[k].contact) << name << " event " << k;
-  }
-  EXPECT_LT((following.velocity - integrated.velocity).cwiseAbs().maxCoeff(), 1e-10) << name;
+  same_solution::expectSameSolution(following, integrated, 1e-10, name);
 }
 }  // namespace
 

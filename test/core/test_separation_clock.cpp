@@ -8,6 +8,7 @@
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "billiard_shot_planner/scenarios/cushion_impact.hpp"
+#include "same_solution.hpp"
 
 namespace bsp = billiard_shot_planner;
 
@@ -24,15 +25,10 @@ bsp::SolverOptions plainTime()
 
 void expectSameSolution(const bsp::ImpactResult& clocked, const bsp::ImpactResult& plain, const char* name)
 {
-  ASSERT_EQ(clocked.events.size(), plain.events.size()) << name;
-  for (std::size_t k = 0; k < clocked.events.size(); ++k)
-  {
-    EXPECT_EQ(clocked.events[k].type, plain.events[k].type) << name << " event " << k;
-    EXPECT_EQ(clocked.events[k].contact, plain.events[k].contact) << name << " event " << k;
+  same_solution::expectSameSolution(clocked, plain, 1e-9, name);
+  for (std::size_t k = 0; k < std::min(clocked.events.size(), plain.events.size()); ++k)
     EXPECT_NEAR(clocked.events[k].at.time, plain.events[k].at.time, 1e-9 * plain.events.back().at.time)
         << name << " event " << k;
-  }
-  EXPECT_LT((clocked.velocity - plain.velocity).cwiseAbs().maxCoeff(), 1e-9) << name;
 }
 }  // namespace
 

@@ -1,0 +1,59 @@
+// Shared by the tests that solve one impact two ways (closed form or integration, separation clock or plain time,
+// quasi-steady or integrated slip): the two must give the same state sequence and the same final velocities.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
+#include "billiard_shot_planner/scenarios/cue_strike.hpp"
+#include "billiard_shot_planner/scenarios/cushion_impact.hpp"
+
+namespace same_solution
+{
+namespace bsp = billiard_shot_planner;
+
+inline const bsp::ImpactResult& impactOf(const bsp::ImpactResult& r)
+{
+  return r;
+}
+inline const bsp::ImpactResult& impactOf(const bsp::BallTableImpactResult& r)
+{
+  return r.impact;
+}
+inline const bsp::ImpactResult& impactOf(const bsp::CueStrikeResult& r)
+{
+  return r.impact;
+}
+inline const bsp::ImpactResult& impactOf(const bsp::CushionImpactResult& r)
+{
+  return r.impact;
+}
+
+/// The same events (type and contact, in order) and final velocities within `velocity_tolerance` (m/s, rad/s).
+inline void expectSameSolution(const bsp::ImpactResult& a, const bsp::ImpactResult& b, double velocity_tolerance,
+                               const std::string& name)
+{
+  ASSERT_EQ(a.events.size(), b.events.size()) << name;
+  for (std::size_t k = 0; k < a.events.size(); ++k)
+  {
+    EXPECT_EQ(a.events[k].type, b.events[k].type) << name << " event " << k;
+    EXPECT_EQ(a.events[k].contact, b.events[k].contact) << name << " event " << k;
+  }
+  EXPECT_LT((a.velocity - b.velocity).cwiseAbs().maxCoeff(), velocity_tolerance) << name;
+}
+
+/// Solves `problem` with both settings and compares the impacts.
+template <class Problem>
+void expectSameSolution(const Problem& problem, const bsp::SolverOptions& first, const bsp::SolverOptions& second,
+                        double velocity_tolerance, const std::string& name)
+{
+  const auto a = bsp::solve(problem, first);
+  const auto b = bsp::solve(problem, second);
+  ASSERT_TRUE(a.ok()) << name << ": " << a.error().message;
+  ASSERT_TRUE(b.ok()) << name << ": " << b.error().message;
+  expectSameSolution(impactOf(a.value()), impactOf(b.value()), velocity_tolerance, name);
+}
+
+}  // namespace same_solution
