@@ -52,11 +52,9 @@ Eigen::VectorXd ContactDynamics::relativeVelocity(const double* y) const
 
 void ContactDynamics::relativeVelocity(const double* y, Eigen::VectorXd& velocity) const
 {
-  // Column by column: for these small matrices (up to a few dozen rows) this beats Eigen's general product, and
-  // the integrator calls it for every right-hand side.
+  // Eigen's matrix–vector kernel: faster here than a coefficient-wise (lazy) product, on 6 rows as on 30.
   velocity = space_.w0;
-  for (int j = 0; j < space_.size; ++j)
-    velocity += space_.delassus.col(j) * y[j];
+  velocity.noalias() += space_.delassus * Eigen::Map<const Eigen::VectorXd>(y, space_.size);
 }
 
 void ContactDynamics::springForces(const double* y, Eigen::VectorXd& force) const
