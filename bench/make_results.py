@@ -107,7 +107,8 @@ def main():
         *comparisons,
         "",
         "Velocity error: largest difference of the final velocities (m/s; rad/s for spins) from a converged solution, "
-        "the package's numerical integration alone at tolerance 1e-14 (bench/bench_support.hpp); for Table 1 with "
+        "the package's numerical integration alone in plain time (no closed form, separation clock or quasi-steady "
+        "slip) at tolerance 1e-14 (bench/bench_support.hpp); for Table 1 with "
         "the paper's method, from the converged values of ../shared/spec/paper_errata.md. Siconos is timed inside "
         "MultipleImpact::compute only.",
         "",
