@@ -38,7 +38,7 @@ void ContactDynamics::refresh()
   {
     if (contacts_[i].phase == NormalPhase::RigidLink)
       rigid_contacts_.push_back(i);
-    any_quasi_steady_ = any_quasi_steady_ || (contacts_[i].sliding() && contacts_[i].quasi_steady);
+    any_quasi_steady_ = any_quasi_steady_ || contacts_[i].followsSlip();
   }
   directions_.resize(contacts_.size());
 }
@@ -109,7 +109,7 @@ void ContactDynamics::followSlip(const double* y, Eigen::VectorXd& force) const
   // and ρ³ in the force (μF_n = κρ).
   relativeVelocity(y, follow_velocity_);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
-    if (contacts_[i].sliding() && contacts_[i].quasi_steady)
+    if (contacts_[i].followsSlip())
     {
       const Eigen::Vector2d v_t = follow_velocity_.segment<2>(space_.offset[i] + 1);
       if (v_t.norm() > 0.0)
@@ -118,7 +118,7 @@ void ContactDynamics::followSlip(const double* y, Eigen::VectorXd& force) const
   forcesAlongDirections(y, force);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
-    if (!contacts_[i].sliding() || !contacts_[i].quasi_steady)
+    if (!contacts_[i].followsSlip())
       continue;
     const int row = space_.offset[i];
     const Eigen::Vector2d v_t = follow_velocity_.segment<2>(row + 1);
@@ -173,7 +173,7 @@ double ContactDynamics::strainEnergy(std::size_t contact, const double* y) const
 Eigen::Vector2d ContactDynamics::springDirection(std::size_t contact, const double* y) const
 {
   const ContactState& state = contacts_[contact];
-  if (!state.sliding() || !state.quasi_steady)
+  if (!state.followsSlip())
     return carrierDirection(contact, y);
   forces(y, follow_force_);
   return directions_[contact];
@@ -217,7 +217,7 @@ void ContactDynamics::springRates(std::size_t contact, const double* y, const Ei
     tangential_rate = v_t;  // stick: the contact particle is at rest on B (spec §2.6)
     return;
   }
-  if (state.quasi_steady)
+  if (state.followsSlip())
     return;  // the direction follows the slip (followSlip); the carrier waits for the release
   // Slip: ṡ_t = v_t − σŝ (spec §2.6), whose radial part only keeps |s_t| = μη²|s_n| on the cone. The friction is
   // −μF_nŝ, so only the direction ŝ matters: the state carries it at a fixed length (never through zero, where it
@@ -250,7 +250,7 @@ double ContactDynamics::rates(const double* y, double* dydt) const
   {
     springRates(i, y, velocity_scratch_, force_scratch_, dydt + space_.size + space_.offset[i]);
     const ContactState& contact = contacts_[i];
-    if (contact.slipping && contact.phase == NormalPhase::Restitution)
+    if (contact.slidingInRestitution())
     {
       // ρ = μη²|s_n| shrinks at μη² v_n while the contact separates. v_n is smoothed where it reaches zero (a restart
       // of compression) so that the clock stays smooth across that event too.

@@ -31,15 +31,20 @@ struct ContactState
   double restitution = 1.0;
   double friction = 0.0;
   Eigen::Vector2d slip_direction = Eigen::Vector2d::UnitX();  ///< used while the tangential spring is relaxed
-  /// While sliding from a relaxed start, the slip direction follows the tangential velocity with its quasi-steady lag
-  /// instead of being integrated: the cone's spring ρ = μF_n/κ is then so short that the direction relaxes far
-  /// faster than anything else moves (|v_t|/ρ), a stiff equation. Released once ρ reaches QUASI_STEADY_CONE_LENGTH.
+  /// Set when a slip starts from relaxed springs (read through followsSlip()): the slip direction then follows the
+  /// tangential velocity with its quasi-steady lag instead of being integrated, because the cone's spring
+  /// ρ = μF_n/κ is so short that the direction relaxes far faster than anything else moves (|v_t|/ρ), a stiff
+  /// equation. Released once ρ reaches QUASI_STEADY_CONE_LENGTH.
   bool quasi_steady = false;
 
   bool active() const { return phase != NormalPhase::Inactive; }
   bool compliant() const { return phase == NormalPhase::Compression || phase == NormalPhase::Restitution; }
   /// Touching and sliding (only contacts with tangential rows ever slip).
   bool sliding() const { return active() && slipping; }
+  /// Sliding with its direction following the slip (see quasi_steady).
+  bool followsSlip() const { return sliding() && quasi_steady; }
+  /// Sliding while its normal spring relaxes: the cone shrinks toward a separation (see SeparationClockStepper).
+  bool slidingInRestitution() const { return slipping && phase == NormalPhase::Restitution; }
   /// Current η² = k/κ; grows by 1/e² with k at every end of compression (spec §2.4).
   double eta2() const { return stiffness / kappa; }
 };

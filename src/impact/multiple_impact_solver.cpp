@@ -1,5 +1,7 @@
 #include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
 
+#include "dense_stepper.hpp"  // first: its Boost 1.74 workaround must come before any Boost.Math header
+
 #include <algorithm>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
@@ -151,17 +153,17 @@ private:
     return {};
   }
 
-  /// Fires every transition due at the current instant, then records the state if the active set changed.
   /// With SolverOptions::quasi_steady_slip off, every slip direction is integrated from its start.
   void integrateEverySlipDirection()
   {
     if (options_.quasi_steady_slip)
       return;
     for (std::size_t i = 0; i < contacts_.size(); ++i)
-      if (contacts_[i].quasi_steady)
+      if (contacts_[i].followsSlip())
         releaseDirection(i);
   }
 
+  /// Fires every transition due at the current instant, then records the state if the active set changed.
   Status settle()
   {
     integrateEverySlipDirection();
@@ -207,7 +209,7 @@ private:
   {
     std::vector<std::size_t> following;
     for (std::size_t i = 0; i < contacts_.size(); ++i)
-      if (contacts_[i].sliding() && contacts_[i].quasi_steady)
+      if (contacts_[i].followsSlip())
         following.push_back(i);
     for (std::size_t i : following)
       releaseDirection(i);
@@ -223,14 +225,6 @@ private:
     return stepper;
   }
 
-  bool slidingContactInRestitution() const
-  {
-    for (const ContactState& contact : contacts_)
-      if (contact.slipping && contact.phase == NormalPhase::Restitution)
-        return true;
-    return false;
-  }
-
   /// Integrates to the next transition: in closed form where the dynamics is linear (no sliding direction can
   /// turn), otherwise with Bulirsch–Stoer, on the separation clock while a sliding contact may separate.
   Expected<bool> advanceToNextEvent()
@@ -240,7 +234,8 @@ private:
         return advanceWith(*stepper);
     omega_ = fastestFrequency();
     IntegrationSettings settings{options_.absolute_tolerance, options_.relative_tolerance, 0.5 / omega_, 0.01 / omega_};
-    if (options_.separation_clock && slidingContactInRestitution())
+    if (options_.separation_clock &&
+        std::any_of(contacts_.begin(), contacts_.end(), [](const ContactState& c) { return c.slidingInRestitution(); }))
     {
       settings.max_step = 0.0;  // unbounded in u: guardSamples subdivides long steps instead
       SeparationClockStepper stepper(dynamics_, y_, t_, settings);

@@ -1,36 +1,16 @@
 #pragma once
 
-#include "fast_binomial.hpp"  // before Odeint
-
-#include <boost/numeric/odeint.hpp>
+#include <algorithm>
 #include <functional>
 #include <utility>
 
 #include "contact_dynamics.hpp"
+#include "dense_stepper.hpp"
 
 namespace billiard_shot_planner
 {
 namespace detail
 {
-/// Bulirsch–Stoer extrapolation with dense output: between events the spring dynamics is smooth (analytic), so a
-/// high-order method reaches 1e-12 in far fewer steps than a fifth-order Runge–Kutta.
-using DenseStepper = boost::numeric::odeint::bulirsch_stoer_dense_out<OdeState>;
-
-/// Settings shared by the numerical steppers of one state.
-struct IntegrationSettings
-{
-  double absolute_tolerance;
-  double relative_tolerance;
-  double max_step;
-  double first_step;
-};
-
-inline DenseStepper makeDenseStepper(const IntegrationSettings& settings)
-{
-  return DenseStepper(settings.absolute_tolerance, settings.relative_tolerance, 1.0, 1.0, settings.max_step,
-                      /*control_interpolation=*/true);
-}
-
 /// Integrates the spring dynamics on a clock u that slows down as sliding contacts approach separation.
 ///
 /// Why: as a sliding contact separates, its spring length on the friction cone, ρ = μF_n/κ, falls linearly to zero

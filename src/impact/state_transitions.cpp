@@ -29,7 +29,6 @@ void chooseInitialMode(ContactState& contact, const Eigen::VectorXd& velocity, c
                        std::size_t index)
 {
   contact.slipping = false;
-  contact.quasi_steady = false;
   if (space.dim[index] != 3)
     return;
   const int row = space.offset[index];
@@ -43,11 +42,13 @@ void chooseInitialMode(ContactState& contact, const Eigen::VectorXd& velocity, c
 }
 
 /// Puts a contact into slip along `direction`. Its tangential spring state becomes the unit carrier of the slip
-/// direction (see ContactDynamics::springRates).
+/// direction (see ContactDynamics::springRates). A slip from relaxed springs starts by following the slip
+/// (ContactState::quasi_steady); one from a loaded spring (stick to slip) is integrated from the start.
 void startSlip(ContactState& contact, const Eigen::Vector2d& direction, double* y, const ContactSpace& space,
-               std::size_t index)
+               std::size_t index, bool from_relaxed_springs)
 {
   contact.slipping = true;
+  contact.quasi_steady = from_relaxed_springs;
   contact.slip_direction = direction;
   double* s = springs(y, space, index);
   s[1] = direction.x();
@@ -128,10 +129,7 @@ std::vector<ContactEventType> activate(std::size_t index, const Kinematics& kine
   contact.phase = contact.rigid ? NormalPhase::RigidLink : NormalPhase::Compression;
   chooseInitialMode(contact, kinematics.velocity, space, index);
   if (contact.slipping)
-  {
-    startSlip(contact, contact.slip_direction, y, space, index);
-    contact.quasi_steady = true;  // from a relaxed spring
-  }
+    startSlip(contact, contact.slip_direction, y, space, index, /*from_relaxed_springs=*/true);
   return {ContactEventType::Reactivation};
 }
 }  // namespace
@@ -173,7 +171,7 @@ std::vector<Guard> armedGuards(const std::vector<ContactState>& contacts, const 
     }
     if (space.dim[i] == 3)
       guards.push_back({i, contacts[i].slipping ? ContactEventType::SlipToStick : ContactEventType::StickToSlip});
-    if (contacts[i].sliding() && contacts[i].quasi_steady)
+    if (contacts[i].followsSlip())
       guards.push_back({i, ContactEventType::StickToSlip, /*releases_direction=*/true});
   }
   return guards;
@@ -226,7 +224,6 @@ std::vector<ContactEventType> applyTransition(const Guard& guard, const Kinemati
     case ContactEventType::LinkRelease:
       contact.phase = NormalPhase::Inactive;
       contact.slipping = false;
-      contact.quasi_steady = false;
       relaxSprings(y, space, guard.contact);
       break;
     case ContactEventType::Reactivation:
@@ -237,12 +234,11 @@ std::vector<ContactEventType> applyTransition(const Guard& guard, const Kinemati
       const Eigen::Vector2d force(kinematics.force(row + 1), kinematics.force(row + 2));
       // The spring points against its force.
       startSlip(contact, force.norm() > 0.0 ? Eigen::Vector2d(-force.normalized()) : contact.slip_direction, y, space,
-                guard.contact);
+                guard.contact, /*from_relaxed_springs=*/false);
       break;
     }
     case ContactEventType::SlipToStick:
       contact.slipping = false;
-      contact.quasi_steady = false;
       {
         // While sliding the friction came from the normal force; from now on the spring holds that force.
         double* spring = springs(y, space, guard.contact);
@@ -330,10 +326,7 @@ void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vecto
   // All springs are relaxed at the start, so they all follow their slip at first.
   for (std::size_t i = 0; i < contacts.size(); ++i)
     if (contacts[i].sliding())
-    {
-      startSlip(contacts[i], contacts[i].slip_direction, y.data(), space, i);
-      contacts[i].quasi_steady = true;
-    }
+      startSlip(contacts[i], contacts[i].slip_direction, y.data(), space, i, /*from_relaxed_springs=*/true);
 }
 
 std::vector<ContactState> initialContactStates(const ImpactProblem& problem, const ContactSpace& space)
