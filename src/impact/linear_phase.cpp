@@ -57,9 +57,11 @@ bool directionFixed(std::size_t i, const ContactSpace& space, const ContactDynam
 }
 }  // namespace
 
-Eigen::MatrixXd LinearPhaseStepper::forceMap(const ContactSpace& space, const std::vector<ContactState>& contacts,
-                                             const ContactDynamics& dynamics, std::vector<double>& stiffness)
+void LinearPhaseStepper::readForceMap(const ContactSpace& space, const std::vector<ContactState>& contacts,
+                                      const ContactDynamics& dynamics)
 {
+  moving_rows_.clear();
+  stiffness_.clear();
   for (std::size_t i = 0; i < contacts.size(); ++i)
   {
     const ContactState& contact = contacts[i];
@@ -69,13 +71,13 @@ Eigen::MatrixXd LinearPhaseStepper::forceMap(const ContactSpace& space, const st
     if (contact.compliant())
     {
       moving_rows_.push_back(row);
-      stiffness.push_back(contact.stiffness);
+      stiffness_.push_back(contact.stiffness);
     }
     if (space.dim[i] == 3 && !contact.slipping)  // a sliding spring only carries its (fixed) direction
       for (int k = 1; k <= 2; ++k)
       {
         moving_rows_.push_back(row + k);
-        stiffness.push_back(contact.kappa);
+        stiffness_.push_back(contact.kappa);
       }
   }
   // The forces (rigid-link forces and sliding friction included) are linear in the moving springs: F = G s_R. G is
@@ -83,92 +85,133 @@ Eigen::MatrixXd LinearPhaseStepper::forceMap(const ContactSpace& space, const st
   // The other springs keep their values: a sliding spring's direction sets its friction.
   const Eigen::Index n = space.size;
   const auto r = static_cast<Eigen::Index>(moving_rows_.size());
-  OdeState probe = y0_;
   for (int row : moving_rows_)
-    probe[static_cast<std::size_t>(n + row)] = 0.0;
-  Eigen::MatrixXd force_from_s(n, r);
-  Eigen::VectorXd force;
+    base_state_[static_cast<std::size_t>(n + row)] = 0.0;
+  probe_ = base_state_;
+  force_from_s_.resize(n, r);
   for (Eigen::Index a = 0; a < r; ++a)
   {
-    probe[static_cast<std::size_t>(n + moving_rows_[a])] = 1.0;
-    dynamics.forces(probe.data(), force);
-    force_from_s.col(a) = force;
-    probe[static_cast<std::size_t>(n + moving_rows_[a])] = 0.0;
+    probe_[static_cast<std::size_t>(n + moving_rows_[a])] = 1.0;
+    dynamics.forces(probe_.data(), probe_force_);
+    force_from_s_.col(a) = probe_force_;
+    probe_[static_cast<std::size_t>(n + moving_rows_[a])] = 0.0;
   }
-  return force_from_s;
 }
 
-std::optional<LinearPhaseStepper> LinearPhaseStepper::tryBuild(const ContactSpace& space,
-                                                               const std::vector<ContactState>& contacts,
-                                                               const ContactDynamics& dynamics, const OdeState& y0,
-                                                               double t0, double radians_per_step)
+bool LinearPhaseStepper::slidingDirectionsFixed(const ContactSpace& space, const std::vector<ContactState>& contacts,
+                                                const ContactDynamics& dynamics, const OdeState& y0,
+                                                bool& any_sliding) const
 {
-  LinearPhaseStepper stepper(y0, t0);
-  std::vector<double> stiffness;
-  const Eigen::MatrixXd force_from_s = stepper.forceMap(space, contacts, dynamics, stiffness);
-  const Eigen::MatrixXd delassus_times_g = space.delassus * force_from_s;
-  const Eigen::VectorXd velocity = dynamics.relativeVelocity(y0.data());
-  bool sliding = false;
+  any_sliding = false;
   for (std::size_t i = 0; i < contacts.size(); ++i)
   {
     if (!contacts[i].sliding())
       continue;
-    if (!directionFixed(i, space, dynamics, y0, velocity, delassus_times_g))
-      return std::nullopt;
-    sliding = true;
+    if (!directionFixed(i, space, dynamics, y0, start_velocity_, delassus_times_g_))
+      return false;
+    any_sliding = true;
   }
+  return true;
+}
+
+bool LinearPhaseStepper::build(const ContactSpace& space, const std::vector<ContactState>& contacts,
+                               const ContactDynamics& dynamics, const OdeState& y0, double t0, double radians_per_step)
+{
+  base_state_ = y0;
+  t0_ = t_ = t0;
+  dynamics_ = &dynamics;
+  readForceMap(space, contacts, dynamics);
+  delassus_times_g_.noalias() = space.delassus * force_from_s_;
+  dynamics.relativeVelocity(y0.data(), start_velocity_);
+  bool sliding = false;
+  if (!slidingDirectionsFixed(space, contacts, dynamics, y0, sliding))
+    return false;
   // With rigid links G = Π E_R (−K), Π = 1 − B W_LL⁺ W_L, and W G = (W Π) E_R (−K) with W Π symmetric (the Schur
   // complement of the links in W) unless friction slides: then symmetry is checked, not assumed.
   const Eigen::Index n = space.size;
-  const auto r = static_cast<Eigen::Index>(stepper.moving_rows_.size());
-  Eigen::VectorXd sqrt_k(r);
-  Eigen::MatrixXd reduced(r, r);  // (W Π)_RR
+  const auto r = static_cast<Eigen::Index>(moving_rows_.size());
+  sqrt_k_.resize(r);
+  reduced_.resize(r, r);
   for (Eigen::Index a = 0; a < r; ++a)
   {
-    sqrt_k(a) = std::sqrt(stiffness[a]);
+    sqrt_k_(a) = std::sqrt(stiffness_[a]);
     for (Eigen::Index b = 0; b < r; ++b)
-      reduced(a, b) = -delassus_times_g(stepper.moving_rows_[a], b) / stiffness[b];
+      reduced_(a, b) = -delassus_times_g_(moving_rows_[a], b) / stiffness_[b];
   }
   if (sliding && r > 0 &&
-      (reduced - reduced.transpose()).lpNorm<Eigen::Infinity>() > ROUND_OFF * reduced.lpNorm<Eigen::Infinity>())
-    return std::nullopt;
-  const Eigen::MatrixXd symmetric = sqrt_k.asDiagonal() * (0.5 * (reduced + reduced.transpose())) * sqrt_k.asDiagonal();
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> modes(symmetric);
-  if (sliding && r > 0 && modes.eigenvalues().minCoeff() < -ROUND_OFF * modes.eigenvalues().cwiseAbs().maxCoeff())
-    return std::nullopt;  // friction could make the springs grow without bound: left to the integrator
-  stepper.omega_ = modes.eigenvalues().cwiseMax(0.0).cwiseSqrt();
-  stepper.spring_from_modes_ = sqrt_k.cwiseInverse().asDiagonal() * modes.eigenvectors();
-  stepper.impulse_from_modes_ = force_from_s * stepper.spring_from_modes_;
+      (reduced_ - reduced_.transpose()).lpNorm<Eigen::Infinity>() > ROUND_OFF * reduced_.lpNorm<Eigen::Infinity>())
+    return false;
+  symmetric_.noalias() = sqrt_k_.asDiagonal() * (0.5 * (reduced_ + reduced_.transpose())) * sqrt_k_.asDiagonal();
+  modes_.compute(symmetric_);
+  if (sliding && r > 0 && modes_.eigenvalues().minCoeff() < -ROUND_OFF * modes_.eigenvalues().cwiseAbs().maxCoeff())
+    return false;  // friction could make the springs grow without bound: left to the integrator
+  omega_ = modes_.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  spring_from_modes_.noalias() = sqrt_k_.cwiseInverse().asDiagonal() * modes_.eigenvectors();
+  force_from_modes_.noalias() = force_from_s_ * spring_from_modes_;
 
-  Eigen::VectorXd z(r), z_rate(r);
+  // Modal coordinates of z = K^{1/2} s_R and of its rate (z and ż held in calc_state's scratch for the moment).
+  position_.resize(r);
+  integral_.resize(r);
   for (Eigen::Index a = 0; a < r; ++a)
   {
-    z(a) = sqrt_k(a) * y0[static_cast<std::size_t>(n + stepper.moving_rows_[a])];
-    z_rate(a) = sqrt_k(a) * velocity(stepper.moving_rows_[a]);
+    position_(a) = sqrt_k_(a) * y0[static_cast<std::size_t>(n + moving_rows_[a])];
+    integral_(a) = sqrt_k_(a) * start_velocity_(moving_rows_[a]);
   }
-  stepper.modal_position_ = modes.eigenvectors().transpose() * z;
-  stepper.modal_velocity_ = modes.eigenvectors().transpose() * z_rate;
-  stepper.position_.resize(r);
-  stepper.integral_.resize(r);
-  stepper.springs_.resize(r);
-  const double fastest = r > 0 ? stepper.omega_.maxCoeff() : 0.0;
-  stepper.step_ = radians_per_step / (fastest > 0.0 ? fastest : 1.0);
-  return stepper;
+  modal_position_.noalias() = modes_.eigenvectors().transpose() * position_;
+  modal_velocity_.noalias() = modes_.eigenvectors().transpose() * integral_;
+  const double fastest = r > 0 ? omega_.maxCoeff() : 0.0;
+  step_ = radians_per_step / (fastest > 0.0 ? fastest : 1.0);
+  return true;
+}
+
+void LinearPhaseStepper::evaluateModes(double t) const
+{
+  const double tau = t - t0_;
+  for (Eigen::Index j = 0; j < omega_.size(); ++j)
+    std::tie(position_(j), integral_(j)) = oscillator(modal_position_(j), modal_velocity_(j), omega_(j), tau);
 }
 
 void LinearPhaseStepper::calc_state(double t, OdeState& y) const
 {
-  const double tau = t - t0_;
+  evaluateModes(t);
+  y = base_state_;
+  addModes(y, nullptr);
+}
+
+void LinearPhaseStepper::calc_kinematics(double t, OdeState& y, Kinematics& kinematics) const
+{
+  evaluateModes(t);
+  y = base_state_;
+  kinematics.y = y.data();
+  kinematics.force.setZero(force_from_modes_.rows());
+  addModes(y, kinematics.force.data());
+  // The velocity from the impulses, not from the modes (w0 + W G K^{-1/2} Q ∫p): the same to round-off, but contacts
+  // barely reached yet (the far end of a chain) have velocities of that order, and the modal sum's round-off then
+  // decides their first events differently from the integrator.
+  dynamics_->relativeVelocity(y.data(), kinematics.velocity);
+}
+
+void LinearPhaseStepper::addModes(OdeState& y, double* force) const
+{
+  // Plain loops, mode by mode: the matrices are tiny (a few rows, a few modes), where Eigen's product kernels cost
+  // more than they save; this runs at every guard sample.
+  const Eigen::Index n = force_from_modes_.rows();
   const Eigen::Index r = omega_.size();
+  double* impulses = y.data();
+  double* springs = y.data() + n;
   for (Eigen::Index j = 0; j < r; ++j)
-    std::tie(position_(j), integral_(j)) = oscillator(modal_position_(j), modal_velocity_(j), omega_(j), tau);
-  y = y0_;
-  const Eigen::Index n = impulse_from_modes_.rows();
-  // Coefficient-wise products: the matrices are tiny, where Eigen's blocked kernels cost more than they save.
-  Eigen::Map<Eigen::VectorXd>(y.data(), n).noalias() += impulse_from_modes_.lazyProduct(integral_);
-  springs_.noalias() = spring_from_modes_.lazyProduct(position_);
-  for (Eigen::Index a = 0; a < r; ++a)
-    y[static_cast<std::size_t>(n + moving_rows_[a])] = springs_(a);
+  {
+    const double p = position_(j), integral = integral_(j);
+    const double* force_column = force_from_modes_.col(j).data();
+    for (Eigen::Index i = 0; i < n; ++i)
+      impulses[i] += force_column[i] * integral;
+    for (Eigen::Index a = 0; a < r; ++a)
+      springs[moving_rows_[a]] += spring_from_modes_(a, j) * p;
+    if (force == nullptr)
+      continue;
+    for (Eigen::Index i = 0; i < n; ++i)
+      force[i] += force_column[i] * p;
+  }
 }
 
 }  // namespace detail

@@ -1,11 +1,12 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <optional>
+#include <Eigen/Eigenvalues>
 #include <utility>
 #include <vector>
 
 #include "contact_dynamics.hpp"
+#include "state_transitions.hpp"
 
 namespace billiard_shot_planner
 {
@@ -22,16 +23,17 @@ namespace detail
 /// state at any instant is a sum of sines and cosines, exact to round-off. It replaces the numerical integrator in
 /// these states, with the same interface as Odeint's dense-output steppers so that the guards and the root finding
 /// stay the same.
+///
+/// One stepper serves a whole solve and is rebuilt at every state: its storage is kept, so that a rebuild
+/// allocates nothing once the sizes have been seen (a frictionless collision is a handful of short states).
 class LinearPhaseStepper
 {
 public:
-  /// The closed form of the state from y0 at t0, or nothing when the state's dynamics is not linear (a sliding
+  /// Builds the closed form of the state from y0 at t0; false when the state's dynamics is not linear (a sliding
   /// direction would turn) or not symmetric. Steps span `radians_per_step` of the fastest mode's phase.
   /// `dynamics` must describe the same discrete state as `contacts` (refreshed after the last transition).
-  static std::optional<LinearPhaseStepper> tryBuild(const ContactSpace& space,
-                                                    const std::vector<ContactState>& contacts,
-                                                    const ContactDynamics& dynamics, const OdeState& y0, double t0,
-                                                    double radians_per_step);
+  bool build(const ContactSpace& space, const std::vector<ContactState>& contacts, const ContactDynamics& dynamics,
+             const OdeState& y0, double t0, double radians_per_step);
 
   /// Advances by a fixed step: a fraction of the fastest period, so that guard sampling sees every crossing.
   template <class System>
@@ -43,24 +45,46 @@ public:
   }
 
   void calc_state(double t, OdeState& y) const;
+  /// The state at t with its kinematics, the forces read off the modes: what calc_state followed by
+  /// evaluateKinematics gives, without the force law (guards are sampled, and their roots found, with it).
+  void calc_kinematics(double t, OdeState& y, Kinematics& kinematics) const;
 
 private:
-  LinearPhaseStepper(const OdeState& y0, double t0) : y0_(y0), t0_(t0), t_(t0), step_(0.0) {}
-  /// Collects the moving springs (their rows and stiffnesses) and returns the force map G: F = G s_R.
-  Eigen::MatrixXd forceMap(const ContactSpace& space, const std::vector<ContactState>& contacts,
-                           const ContactDynamics& dynamics, std::vector<double>& stiffness);
+  /// Collects the moving springs (rows and stiffnesses) and reads the force map G (F = G s_R) into force_from_s_.
+  void readForceMap(const ContactSpace& space, const std::vector<ContactState>& contacts,
+                    const ContactDynamics& dynamics);
+  /// Whether every sliding contact keeps its direction; `any_sliding` tells if there is one.
+  bool slidingDirectionsFixed(const ContactSpace& space, const std::vector<ContactState>& contacts,
+                              const ContactDynamics& dynamics, const OdeState& y0, bool& any_sliding) const;
+  /// Modal positions p and their time integrals ∫p at t, into position_ and integral_.
+  void evaluateModes(double t) const;
+  /// Adds the modes' part (in position_ and integral_) to a state that holds base_state_, and to the forces.
+  void addModes(OdeState& y, double* force) const;
 
-  OdeState y0_;
-  double t0_;
-  double t_;
-  double step_;
-  std::vector<int> moving_rows_;    ///< rows of s that change (compliant normals, sticking tangentials)
+  const ContactDynamics* dynamics_ = nullptr;  ///< of the state built (the solver keeps it alive)
+  OdeState base_state_;  ///< the state at t0 with the moving springs at zero: what the modes add to
+  double t0_ = 0.0;
+  double t_ = 0.0;
+  double step_ = 0.0;
+  std::vector<int> moving_rows_;  ///< rows of s that change (compliant normals, sticking tangentials)
+  std::vector<double> stiffness_;
   Eigen::VectorXd omega_;           ///< modal angular frequencies
   Eigen::VectorXd modal_position_;  ///< modal coordinates at t0
   Eigen::VectorXd modal_velocity_;
-  Eigen::MatrixXd spring_from_modes_;                      ///< s_R = K^{-1/2} Q p
-  Eigen::MatrixXd impulse_from_modes_;                     ///< I − I0 = G K^{-1/2} Q ∫p
-  mutable Eigen::VectorXd position_, integral_, springs_;  ///< scratch of calc_state (called very often)
+  Eigen::MatrixXd spring_from_modes_;  ///< s_R = K^{-1/2} Q p
+  Eigen::MatrixXd force_from_modes_;   ///< F = G K^{-1/2} Q p, so I − I0 = G K^{-1/2} Q ∫p
+  Eigen::VectorXd start_velocity_;     ///< w at t0
+
+  // Scratch of build, kept for its storage.
+  Eigen::MatrixXd force_from_s_;      ///< G
+  Eigen::MatrixXd delassus_times_g_;  ///< W G
+  Eigen::MatrixXd reduced_;           ///< (W Π)_RR
+  Eigen::VectorXd sqrt_k_;
+  Eigen::MatrixXd symmetric_;  ///< K^{1/2} (W Π)_RR K^{1/2}
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> modes_;
+  OdeState probe_;
+  Eigen::VectorXd probe_force_;
+  mutable Eigen::VectorXd position_, integral_;  ///< modes at the last evaluated instant
 };
 
 }  // namespace detail

@@ -79,7 +79,11 @@ public:
   }
 
 private:
-  double kineticEnergy(const Eigen::VectorXd& u) const { return 0.5 * u.dot(problem_.mass_matrix * u); }
+  double kineticEnergy(const Eigen::VectorXd& u) const
+  {
+    momentum_.noalias() = problem_.mass_matrix * u;
+    return 0.5 * u.dot(momentum_);
+  }
 
   bool anyActive() const
   {
@@ -93,18 +97,29 @@ private:
   {
     ImpactSnapshot snap;
     snap.time = t * space_.time_scale;
-    const Eigen::VectorXd impulses = Eigen::Map<const Eigen::VectorXd>(y, space_.size) * space_.impulse_scale;
-    snap.velocity = problem_.velocity + space_.response * impulses;
+    snap.velocity = problem_.velocity;
+    snap.velocity.noalias() +=
+        space_.impulse_scale * (space_.response * Eigen::Map<const Eigen::VectorXd>(y, space_.size));
     snap.kinetic_energy = kineticEnergy(snap.velocity);
     const auto n = static_cast<Eigen::Index>(contacts_.size());
     snap.normal_impulses.resize(n);
     snap.strain_energies.resize(n);
     for (Eigen::Index i = 0; i < n; ++i)
     {
-      snap.normal_impulses(i) = impulses(space_.offset[i]);
+      snap.normal_impulses(i) = y[space_.offset[i]] * space_.impulse_scale;
       snap.strain_energies(i) = dynamics_.strainEnergy(i, y) * space_.energy_scale;
     }
     return snap;
+  }
+
+  /// Whether `set` lists exactly the active contacts (without building the list: called after every event).
+  bool isActiveSet(const std::vector<std::size_t>& set) const
+  {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < contacts_.size(); ++i)
+      if (contacts_[i].active() && (k >= set.size() || set[k++] != i))
+        return false;
+    return k == set.size();
   }
 
   std::vector<std::size_t> activeSet() const
@@ -144,8 +159,8 @@ private:
     }
     if (auto status = countEvent(); !status)
       return status;
-    const Kinematics kinematics = evaluateKinematics(dynamics_, y_.data());
-    for (ContactEventType type : applyTransition(guard, kinematics, y_.data(), contacts_, space_, chatter_))
+    evaluateKinematics(dynamics_, y_.data(), event_kinematics_);
+    for (ContactEventType type : applyTransition(guard, event_kinematics_, y_.data(), contacts_, space_, chatter_))
     {
       dynamics_.refresh();
       result_.events.push_back({type, guard.contact, snapshot(y_.data(), t_)});
@@ -171,18 +186,21 @@ private:
     // A contact whose rigid-link force and grazing acceleration disagree in sign (friction coupling, as in
     // Painlevé's paradox) could switch forever at one instant: after a few switches it is left as it is, and its
     // guards decide from then on.
-    std::vector<int> switches(contacts_.size(), 0);
-    std::vector<bool> settled(contacts_.size(), false);
-    while (auto guard = immediateTransition(evaluateKinematics(dynamics_, y_.data()), contacts_, space_, settled))
+    switches_.assign(contacts_.size(), 0);
+    settled_.assign(contacts_.size(), false);
+    while (true)
     {
+      evaluateKinematics(dynamics_, y_.data(), event_kinematics_);
+      const std::optional<Guard> guard = immediateTransition(event_kinematics_, contacts_, space_, settled_);
+      if (!guard)
+        break;
       if (auto status = fire(*guard); !status)
         return status;
-      settled[guard->contact] = ++switches[guard->contact] >= MAX_SWITCHES_PER_INSTANT;
+      settled_[guard->contact] = ++switches_[guard->contact] >= MAX_SWITCHES_PER_INSTANT;
     }
     integrateEverySlipDirection();
-    std::vector<std::size_t> active = activeSet();
-    if (result_.states.empty() || result_.states.back().active != active)
-      result_.states.push_back({std::move(active), snapshot(y_.data(), t_)});
+    if (result_.states.empty() || !isActiveSet(result_.states.back().active))
+      result_.states.push_back({activeSet(), snapshot(y_.data(), t_)});
     return {};
   }
 
@@ -204,8 +222,9 @@ private:
   }
 
   /// The closed form holds slip directions fixed. A contact following its slip joins it only when its direction
-  /// cannot turn, and then releasing it is exact; otherwise it keeps following.
-  std::optional<LinearPhaseStepper> tryClosedForm()
+  /// cannot turn, and then releasing it is exact; otherwise it keeps following. Builds closed_form_; false when the
+  /// state is not linear.
+  bool tryClosedForm()
   {
     std::vector<std::size_t> following;
     for (std::size_t i = 0; i < contacts_.size(); ++i)
@@ -213,25 +232,24 @@ private:
         following.push_back(i);
     for (std::size_t i : following)
       releaseDirection(i);
-    auto stepper = LinearPhaseStepper::tryBuild(
-        space_, contacts_, dynamics_, y_, t_,
-        options_.record_samples ? RADIANS_PER_RECORDED_STEP : RADIANS_PER_CLOSED_FORM_STEP);
-    if (!stepper && !following.empty())
+    const bool linear =
+        closed_form_.build(space_, contacts_, dynamics_, y_, t_,
+                           options_.record_samples ? RADIANS_PER_RECORDED_STEP : RADIANS_PER_CLOSED_FORM_STEP);
+    if (!linear && !following.empty())
     {
       for (std::size_t i : following)
         contacts_[i].quasi_steady = true;
       dynamics_.refresh();
     }
-    return stepper;
+    return linear;
   }
 
   /// Integrates to the next transition: in closed form where the dynamics is linear (no sliding direction can
   /// turn), otherwise with Bulirsch–Stoer, on the separation clock while a sliding contact may separate.
   Expected<bool> advanceToNextEvent()
   {
-    if (options_.closed_form_linear_phases)
-      if (auto stepper = tryClosedForm())
-        return advanceWith(*stepper);
+    if (options_.closed_form_linear_phases && tryClosedForm())
+      return advanceWith(closed_form_);
     omega_ = fastestFrequency();
     IntegrationSettings settings{options_.absolute_tolerance, options_.relative_tolerance, 0.5 / omega_, 0.01 / omega_};
     if (options_.separation_clock &&
@@ -249,7 +267,7 @@ private:
   template <class Stepper>
   Expected<bool> advanceWith(Stepper& stepper)
   {
-    std::vector<Guard> guards = armedGuards(contacts_, space_);
+    const std::vector<Guard>& guards = armedGuards(contacts_, space_, guards_);
     guard_values_.resize(SAMPLES_PER_STEP + 1, static_cast<Eigen::Index>(guards.size()));
     samples_ = SAMPLES_PER_STEP;
     bool first_row_known = false;  // a step's first sample is the previous step's last
@@ -262,7 +280,7 @@ private:
       samples_ = guardSamples(stepper, t0, t1);
       guard_values_.conservativeResize(samples_ + 1, Eigen::NoChange);
       sampleGuards(stepper, guards, t0, t1, first_row_known);
-      std::vector<FiredGuard> fired = firedGuards(stepper, guards, t0, t1);
+      const std::vector<FiredGuard>& fired = firedGuards(stepper, guards, t0, t1);
       if (fired.empty())
       {
         recordSamples(stepper, t0, t1);
@@ -296,11 +314,23 @@ private:
     }
   }
 
+  /// The state at t of the current step into buffer_, with its kinematics into kinematics_buffer_.
   template <class Stepper>
-  double guardAt(const Stepper& stepper, const Guard& guard, double t) const
+  void evaluateAt(const Stepper& stepper, double t) const
   {
     stepper.calc_state(t, buffer_);
     evaluateKinematics(dynamics_, buffer_.data(), kinematics_buffer_);
+  }
+
+  void evaluateAt(const LinearPhaseStepper& stepper, double t) const
+  {
+    stepper.calc_kinematics(t, buffer_, kinematics_buffer_);
+  }
+
+  template <class Stepper>
+  double guardAt(const Stepper& stepper, const Guard& guard, double t) const
+  {
+    evaluateAt(stepper, t);
     return guardValue(guard, kinematics_buffer_, contacts_, dynamics_, space_);
   }
 
@@ -312,8 +342,7 @@ private:
   {
     for (int k = first_row_known ? 1 : 0; k <= samples_; ++k)
     {
-      stepper.calc_state(sampleTime(t0, t1, k), buffer_);
-      evaluateKinematics(dynamics_, buffer_.data(), kinematics_buffer_);
+      evaluateAt(stepper, sampleTime(t0, t1, k));
       for (std::size_t g = 0; g < guards.size(); ++g)
         guard_values_(k, static_cast<Eigen::Index>(g)) =
             guardValue(guards[g], kinematics_buffer_, contacts_, dynamics_, space_);
@@ -339,11 +368,13 @@ private:
   /// The earliest guard to rise through zero in [t0, t1] (from the samples in guard_values_), with every other one
   /// within round-off of it.
   template <class Stepper>
-  std::vector<FiredGuard> firedGuards(const Stepper& stepper, const std::vector<Guard>& guards, double t0,
-                                      double t1) const
+  const std::vector<FiredGuard>& firedGuards(const Stepper& stepper, const std::vector<Guard>& guards, double t0,
+                                             double t1)
   {
     const Eigen::MatrixXd& values = guard_values_;
-    std::vector<FiredGuard> crossings;
+    std::vector<FiredGuard>& crossings = crossings_;
+    crossings.clear();
+    fired_.clear();
     for (std::size_t g = 0; g < guards.size(); ++g)
     {
       const auto column = static_cast<Eigen::Index>(g);
@@ -359,16 +390,15 @@ private:
       }
     }
     if (crossings.empty())
-      return crossings;
+      return fired_;
     double first = crossings.front().time;
     for (const FiredGuard& c : crossings)
       first = std::min(first, c.time);
     const double simultaneous = 1e-12 * (t1 - t0);
-    std::vector<FiredGuard> fired;
     for (const FiredGuard& c : crossings)
       if (c.time <= first + simultaneous)
-        fired.push_back({c.guard, first});
-    return fired;
+        fired_.push_back({c.guard, first});
+    return fired_;
   }
 
   /// The instant just after the guard's zero (so that the transition has numerically happened).
@@ -410,10 +440,18 @@ private:
   ContactSpace space_;
   std::vector<ContactState> contacts_;
   ContactDynamics dynamics_;
+  LinearPhaseStepper closed_form_;  ///< rebuilt at every linear state (its storage kept)
   ChatterLimit chatter_{};
   OdeState y_;
-  mutable OdeState buffer_;  ///< scratch state for dense-output evaluations
-  mutable Kinematics kinematics_buffer_{};
+  mutable OdeState buffer_;                 ///< scratch state for dense-output evaluations
+  mutable Kinematics kinematics_buffer_{};  ///< of the guard samples
+  Kinematics event_kinematics_{};           ///< at the current instant, for transitions
+  mutable Eigen::VectorXd momentum_;        ///< scratch of kineticEnergy
+  // Storage kept across the solve (a short impact is a few states; allocating per event cost a third of it).
+  std::vector<Guard> guards_;
+  std::vector<FiredGuard> crossings_, fired_;
+  std::vector<int> switches_;
+  std::vector<bool> settled_;
   mutable Eigen::MatrixXd guard_values_;  ///< guard samples of the current step: instants × guards
   int samples_ = SAMPLES_PER_STEP;        ///< guard samples of the current step
   double omega_ = 1.0;                    ///< fastest angular frequency of the current state

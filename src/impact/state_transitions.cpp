@@ -63,8 +63,8 @@ bool isChattering(const ContactState& contact, double stored_energy, const Chatt
   return negligible || contact.stiffness / contact.original_stiffness >= chatter.stiffness_growth;
 }
 
-std::vector<ContactEventType> endCompression(std::size_t index, double* y, std::vector<ContactState>& contacts,
-                                             const ContactSpace& space, const ChatterLimit& chatter)
+TransitionEvents endCompression(std::size_t index, double* y, std::vector<ContactState>& contacts,
+                                const ContactSpace& space, const ChatterLimit& chatter)
 {
   ContactState& contact = contacts[index];
   double* s = springs(y, space, index);
@@ -118,8 +118,8 @@ bool rigidImpact(std::size_t index, const Kinematics& kinematics, double* y, con
   return contacts[index].restitution > 0.0;
 }
 
-std::vector<ContactEventType> activate(std::size_t index, const Kinematics& kinematics, double* y,
-                                       std::vector<ContactState>& contacts, const ContactSpace& space)
+TransitionEvents activate(std::size_t index, const Kinematics& kinematics, double* y,
+                          std::vector<ContactState>& contacts, const ContactSpace& space)
 {
   ContactState& contact = contacts[index];
   relaxSprings(y, space, index);
@@ -148,9 +148,10 @@ void evaluateKinematics(const ContactDynamics& dynamics, const double* y, Kinema
   dynamics.forces(y, kinematics.force);
 }
 
-std::vector<Guard> armedGuards(const std::vector<ContactState>& contacts, const ContactSpace& space)
+const std::vector<Guard>& armedGuards(const std::vector<ContactState>& contacts, const ContactSpace& space,
+                                      std::vector<Guard>& guards)
 {
-  std::vector<Guard> guards;
+  guards.clear();
   for (std::size_t i = 0; i < contacts.size(); ++i)
   {
     switch (contacts[i].phase)
@@ -208,9 +209,9 @@ double guardValue(const Guard& guard, const Kinematics& kinematics, const std::v
   return -1.0;
 }
 
-std::vector<ContactEventType> applyTransition(const Guard& guard, const Kinematics& kinematics, double* y,
-                                              std::vector<ContactState>& contacts, const ContactSpace& space,
-                                              const ChatterLimit& chatter)
+TransitionEvents applyTransition(const Guard& guard, const Kinematics& kinematics, double* y,
+                                 std::vector<ContactState>& contacts, const ContactSpace& space,
+                                 const ChatterLimit& chatter)
 {
   ContactState& contact = contacts[guard.contact];
   switch (guard.type)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <boost/container/static_vector.hpp>
 #include <optional>
 #include <vector>
 
@@ -40,8 +41,9 @@ Kinematics evaluateKinematics(const ContactDynamics& dynamics, const double* y);
 /// The same into an existing Kinematics, reusing its vectors.
 void evaluateKinematics(const ContactDynamics& dynamics, const double* y, Kinematics& kinematics);
 
-/// Guards armed by the current discrete state.
-std::vector<Guard> armedGuards(const std::vector<ContactState>& contacts, const ContactSpace& space);
+/// Guards armed by the current discrete state, into `guards` (returned).
+const std::vector<Guard>& armedGuards(const std::vector<ContactState>& contacts, const ContactSpace& space,
+                                      std::vector<Guard>& guards);
 
 /// g such that the transition fires when g rises through zero.
 double guardValue(const Guard& guard, const Kinematics& kinematics, const std::vector<ContactState>& contacts,
@@ -54,12 +56,16 @@ struct ChatterLimit
   double stiffness_growth;  ///< or once k/k̄ exceeds this
 };
 
+/// The events one transition logs: at most two (an end of compression that makes a rigid link, a reactivation that
+/// separates at once). Kept off the heap: transitions are a large part of a short impact.
+using TransitionEvents = boost::container::static_vector<ContactEventType, 2>;
+
 /// Applies a fired transition to the contact (and its springs in y). Returns the events to log, in order: usually
 /// just guard.type, but an end of compression can also turn the contact into a rigid link, and one on an unloaded
 /// contact is a separation.
-std::vector<ContactEventType> applyTransition(const Guard& guard, const Kinematics& kinematics, double* y,
-                                              std::vector<ContactState>& contacts, const ContactSpace& space,
-                                              const ChatterLimit& chatter);
+TransitionEvents applyTransition(const Guard& guard, const Kinematics& kinematics, double* y,
+                                 std::vector<ContactState>& contacts, const ContactSpace& space,
+                                 const ChatterLimit& chatter);
 
 /// A transition that must happen at once in the current configuration, without any time passing: an inactive
 /// contact that approaches (or is about to), a rigid link whose force is not compressive, a contact in
