@@ -254,6 +254,29 @@ TransitionEvents applyTransition(const Guard& guard, const Kinematics& kinematic
   return {guard.type};
 }
 
+namespace
+{
+/// Whether no contact can load again: none carries a force, none approaches, and none sticks while its bodies slip
+/// (its tangential spring would load). The forces then stay zero and the velocities constant, so a contact that
+/// touches without force and without normal velocity (a ball pushed into a cushion at the height of its centre
+/// leaves the cloth under it unloaded) would touch for ever: it is let go.
+bool nothingCanLoad(const Kinematics& kinematics, const std::vector<ContactState>& contacts, const ContactSpace& space)
+{
+  if (kinematics.force.lpNorm<Eigen::Infinity>() > FORCE_TOLERANCE)
+    return false;
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+  {
+    const int row = space.offset[i];
+    if (kinematics.velocity(row) < -VELOCITY_TOLERANCE)
+      return false;
+    const bool sticking = contacts[i].active() && space.dim[i] == 3 && !contacts[i].slipping;
+    if (sticking && kinematics.velocity.segment<2>(row + 1).norm() > VELOCITY_TOLERANCE)
+      return false;
+  }
+  return true;
+}
+}  // namespace
+
 std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std::vector<ContactState>& contacts,
                                          const ContactSpace& space, const std::vector<bool>& settled)
 {
@@ -286,8 +309,10 @@ std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std
       case NormalPhase::Compression:
         if (s_n >= 0.0 && v_n > VELOCITY_TOLERANCE)
           return Guard{i, ContactEventType::EndOfCompression};
-        break;
+        [[fallthrough]];
       case NormalPhase::Restitution:
+        if (s_n >= 0.0 && std::abs(v_n) <= VELOCITY_TOLERANCE && nothingCanLoad(kinematics, contacts, space))
+          return Guard{i, ContactEventType::Separation};
         break;
     }
   }

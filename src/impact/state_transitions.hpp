@@ -69,7 +69,8 @@ TransitionEvents applyTransition(const Guard& guard, const Kinematics& kinematic
 
 /// A transition that must happen at once in the current configuration, without any time passing: an inactive
 /// contact that approaches (or is about to), a rigid link whose force is not compressive, a contact in
-/// compression that never loaded and is opening. Contacts marked `settled` are left as they are.
+/// compression that never loaded and is opening, a contact that touches without force or normal velocity when
+/// nothing can load it any more. Contacts marked `settled` are left as they are.
 std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std::vector<ContactState>& contacts,
                                          const ContactSpace& space, const std::vector<bool>& settled);
 

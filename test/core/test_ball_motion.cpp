@@ -7,6 +7,7 @@
 
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
+#include "billiard_shot_planner/scenarios/cushion_impact.hpp"
 
 namespace bsp = billiard_shot_planner;
 using Type = bsp::MotionEventType;
@@ -270,6 +271,37 @@ TEST(Cushion, SweepNeverPenetratesOrHangs)
         hits += e.type == Type::CushionHit;
     }
   EXPECT_GT(hits, 150);
+}
+
+TEST(Cushion, AtTheHeightOfTheCentreTheClothNeverLoads)
+{
+  // Cushion nose at the height of the ball's centre: its normal is horizontal. Without spin about the cushion's
+  // direction nothing pushes the ball into the cloth, whose contact touches without force from start to end: the
+  // cloth must change nothing, and the impact must end (it used to run into the step limit, taking seconds).
+  const bsp::Table table;
+  const Eigen::Vector3d spins[] = {Eigen::Vector3d::Zero(), {0, 0, 5.0}, {0, 0, -40.0}};
+  for (const Eigen::Vector3d& spin : spins)
+  {
+    bsp::CushionImpact hit;
+    hit.velocity = {1.5, 0.8, 0.0};
+    hit.angular_velocity = spin;
+    hit.cushion_normal = -Eigen::Vector3d::UnitX();
+    hit.cushion = table.cushion;
+    hit.cloth = table.cloth;
+    hit.on_cloth = false;
+    const auto alone = bsp::solve(hit);
+    hit.on_cloth = true;
+    const auto with_cloth = bsp::solve(hit);
+    ASSERT_TRUE(alone.ok()) << alone.error().describe();
+    ASSERT_TRUE(with_cloth.ok()) << with_cloth.error().describe();
+    EXPECT_LT((with_cloth.value().velocity - alone.value().velocity).cwiseAbs().maxCoeff(), 1e-12) << spin.z();
+    EXPECT_LT((with_cloth.value().angular_velocity - alone.value().angular_velocity).cwiseAbs().maxCoeff(), 1e-9);
+    EXPECT_LT(with_cloth.value().velocity.x(), 0.0);
+    const bsp::ImpactResult& impact = with_cloth.value().impact;
+    EXPECT_EQ(impact.impulses[1].normal, 0.0);
+    EXPECT_EQ(impact.events.back().type, bsp::ContactEventType::Separation);
+    EXPECT_EQ(impact.events.back().contact, 1u);
+  }
 }
 
 TEST(Pocket, StraightAtACornerIsPocketedBesideItIsNot)
