@@ -17,8 +17,10 @@ struct SolverOptions
   /// The same limit is taken once a contact's stiffness has grown by this factor (k/k̄ = e^{-2j}).
   double chatter_stiffness_growth = 1e14;
   std::size_t max_events = 200000;  ///< bound on contact events; beyond it the solve fails (never hangs)
-  std::size_t max_steps = 5000000;  ///< bound on integrator steps
-  bool record_samples = false;      ///< keep the impulse curve and energies at every integrator step
+  /// Bound on integrator steps; beyond it the solve fails (a step costs up to about 10 µs). Every example takes
+  /// under 1 000 by default, and under 10 000 even integrated in plain time at 1e-14.
+  std::size_t max_steps = 100000;
+  bool record_samples = false;  ///< keep the impulse curve and energies at every integrator step
   /// Solve states in which no active contact slides (frictionless or sticking contacts: linear spring dynamics) in
   /// closed form, exact to round-off; off, every state is integrated numerically (for cross-checks).
   bool closed_form_linear_phases = true;
