@@ -304,6 +304,45 @@ TEST(Cushion, AtTheHeightOfTheCentreTheClothNeverLoads)
   }
 }
 
+TEST(Cushion, RandomHitsAndLandingsEndAndLoseEnergy)
+{
+  // Any incidence, spin and cushion height (nose below, at or above the ball's centre), on the cloth or in the
+  // air; landings at any slant and spin. Every impact must end, and none may gain energy.
+  const bsp::Table table;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int k = 0; k < 200; ++k)
+  {
+    bsp::CushionImpact hit;
+    const double tilt = k % 10 == 0 ? 0.0 : 0.6 * u(rng);
+    hit.cushion_normal = {-std::cos(tilt), 0.0, -std::sin(tilt)};
+    const double heading = 1.4 * u(rng), speed = 3.05 + 3.0 * u(rng);
+    hit.velocity = speed * Eigen::Vector3d(std::cos(heading), std::sin(heading), 0.0);
+    hit.angular_velocity = k % 3 == 0 ? Eigen::Vector3d(Eigen::Vector3d::UnitZ().cross(hit.velocity) / 0.0286)
+                                      : Eigen::Vector3d(200 * u(rng), 200 * u(rng), 150 * u(rng));
+    hit.on_cloth = k % 5 != 0;
+    hit.cushion = table.cushion;
+    hit.cloth = table.cloth;
+    hit.stiffness_ratio = table.cushion_stiffness_ratio;
+    const auto result = bsp::solve(hit);
+    ASSERT_TRUE(result.ok()) << k << ": " << result.error().describe();
+    const bsp::ImpactResult& impact = result.value().impact;
+    EXPECT_LE(impact.final_kinetic_energy, impact.initial_kinetic_energy * (1 + 1e-9)) << k;
+  }
+  for (int k = 0; k < 200; ++k)
+  {
+    const bsp::BallTableImpact landing{0.17,
+                                       0.0286,
+                                       {4 * u(rng), 4 * u(rng), -1.51 + 1.49 * u(rng)},
+                                       {100 * u(rng), 100 * u(rng), 100 * u(rng)},
+                                       table.cloth};
+    const auto result = bsp::solve(landing);
+    ASSERT_TRUE(result.ok()) << k << ": " << result.error().describe();
+    const bsp::ImpactResult& impact = result.value().impact;
+    EXPECT_LE(impact.final_kinetic_energy, impact.initial_kinetic_energy * (1 + 1e-9)) << k;
+  }
+}
+
 TEST(Pocket, StraightAtACornerIsPocketedBesideItIsNot)
 {
   bsp::Table table;
