@@ -123,15 +123,11 @@ private:
       trajectory_.outcome = MotionOutcome::OffTable;  // the ball clears the cushion nose
       return true;
     }
-    CushionImpact impact{ball_.mass,
-                         ball_.radius,
-                         state.velocity,
-                         state.angular_velocity,
-                         cushionNormal(rail, table_, ball_.radius, state.position.z()),
-                         on_cloth,
-                         table_.cushion,
-                         table_.cloth,
-                         table_.cushion_stiffness_ratio};
+    const Eigen::Vector3d normal = cushionNormal(rail, table_, state.position);
+    if (state.velocity.dot(normal) >= 0.0)
+      return false;  // grazing the nose in the air, to round-off: nothing to resolve, the flight goes on
+    CushionImpact impact{ball_.mass, ball_.radius,   state.velocity, state.angular_velocity,        normal,
+                         on_cloth,   table_.cushion, table_.cloth,   table_.cushion_stiffness_ratio};
     auto result = solve(impact, p_.impact);
     if (!result)
       return result.error();

@@ -1,5 +1,6 @@
 #include "table_events.hpp"
 
+#include <algorithm>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 
@@ -51,29 +52,100 @@ double cushionReach(const Table& table, double radius)
   return radius * std::sqrt(1.0 - sin_theta * sin_theta);
 }
 
-Eigen::Vector3d cushionNormal(int rail, const Table& table, double radius, double z)
+namespace
 {
-  const double sin_theta = std::clamp((table.cushion_height - z) / radius, -0.99, 0.99);
-  const double cos_theta = std::sqrt(1.0 - sin_theta * sin_theta);
-  Eigen::Vector3d horizontal = Eigen::Vector3d::Zero();
-  horizontal(rail / 2) = rail % 2 == 0 ? 1.0 : -1.0;  // away from the rail, into the table
-  return cos_theta * horizontal - sin_theta * Eigen::Vector3d::UnitZ();
+/// Guard samples of an airborne ball's approach to a nose, over the stretch where its centre is within a radius
+/// of the nose line horizontally (a ball at 5 m/s covers a radius in under 6 ms).
+constexpr int NOSE_SAMPLES = 32;
+
+/// One cushion nose: the line `cushion_height` above the cloth along the edge of the playing surface, at
+/// side · x(axis) = edge.
+struct Nose
+{
+  int axis;
+  double side;
+  double edge;
+};
+
+Nose noseOf(int rail, const Table& table)
+{
+  const int axis = rail / 2;
+  return {axis, rail % 2 == 0 ? -1.0 : 1.0, 0.5 * (axis == 0 ? table.length : table.width)};
+}
+
+/// On the cloth the ball's centre stays at height R, so it touches the nose exactly when its centre reaches the
+/// line at `cushionReach` from the edge: a root of a quadratic.
+std::optional<double> onClothContact(const MotionSegment& segment, const Nose& nose, double reach, double horizon)
+{
+  // g(τ) = side·x(τ) − (edge − reach): rises through zero when the ball reaches the nose moving towards it.
+  const double c = nose.side * segment.start.position(nose.axis) - (nose.edge - reach);
+  const double b = nose.side * segment.start.velocity(nose.axis);
+  const double a = nose.side * segment.acceleration(nose.axis);
+  return firstRisingRoot(c, b, a, MIN_EVENT_SEPARATION, horizon);
+}
+
+/// In the air the ball touches the nose when its centre comes within R of the nose line, which can only happen
+/// while the centre is within R of the edge horizontally: the overlap R² − u² − w² (u the centre's horizontal
+/// distance inside the edge, w its height above the nose) is sampled there and its rise located with TOMS 748. If
+/// the centre crosses the edge first, the ball has passed over the nose (its bottom above it): that instant is
+/// returned too, and the hit it reports leaves the table.
+std::optional<double> airborneContact(const MotionSegment& segment, const Nose& nose, const Table& table, double radius,
+                                      double horizon)
+{
+  const double c = nose.side * segment.start.position(nose.axis) - nose.edge;
+  const double b = nose.side * segment.start.velocity(nose.axis);
+  const double a = nose.side * segment.acceleration(nose.axis);
+  const auto passes = firstRisingRoot(c, b, a, MIN_EVENT_SEPARATION, horizon);
+  const double end = passes ? *passes : horizon;
+  double start = MIN_EVENT_SEPARATION;
+  if (c + radius < 0.0)
+  {
+    const auto near = firstRisingRoot(c + radius, b, a, MIN_EVENT_SEPARATION, end);
+    if (!near)
+      return passes;
+    start = *near;
+  }
+  auto overlap = [&](double tau)
+  {
+    const Eigen::Vector3d centre = segment.at(segment.start_time + tau).position;
+    const double u = nose.edge - nose.side * centre(nose.axis), w = centre.z() - table.cushion_height;
+    return radius * radius - u * u - w * w;
+  };
+  double lo = start, f_lo = overlap(start);
+  for (int k = 1; k <= NOSE_SAMPLES; ++k)
+  {
+    const double hi = start + (end - start) * k / NOSE_SAMPLES, f_hi = overlap(hi);
+    if (f_lo <= 0.0 && f_hi > 0.0)
+    {
+      std::uintmax_t iterations = 100;
+      auto tolerance = [](double l, double h) { return h - l <= 1e-13 * std::max(1.0, h); };
+      return boost::math::tools::toms748_solve(overlap, lo, hi, f_lo, f_hi, tolerance, iterations).second;
+    }
+    lo = hi;
+    f_lo = f_hi;
+  }
+  return passes;
+}
+}  // namespace
+
+Eigen::Vector3d cushionNormal(int rail, const Table& table, const Eigen::Vector3d& centre)
+{
+  const Nose nose = noseOf(rail, table);
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  normal(nose.axis) = centre(nose.axis) - nose.side * nose.edge;  // from the nose line, into the table
+  normal.z() = centre.z() - table.cushion_height;
+  return normal.normalized();
 }
 
 std::optional<Crossing> firstCushionHit(const MotionSegment& segment, const Table& table, double radius, double horizon)
 {
   const double reach = cushionReach(table, radius);
-  const double half[2] = {0.5 * table.length - reach, 0.5 * table.width - reach};
   std::optional<Crossing> best;
   for (int rail = 0; rail < 4; ++rail)
   {
-    const int axis = rail / 2;
-    const double side = rail % 2 == 0 ? -1.0 : 1.0;
-    // g(τ) = side·x(τ) − half: rises through zero when the ball reaches the rail moving towards it.
-    const double c = side * segment.start.position(axis) - half[axis];
-    const double b = side * segment.start.velocity(axis);
-    const double a = side * segment.acceleration(axis);
-    const auto tau = firstRisingRoot(c, b, a, MIN_EVENT_SEPARATION, horizon);
+    const Nose nose = noseOf(rail, table);
+    const auto tau = segment.phase == MotionPhase::Airborne ? airborneContact(segment, nose, table, radius, horizon)
+                                                            : onClothContact(segment, nose, reach, horizon);
     if (tau && (!best || *tau < best->time))
       best = Crossing{*tau, rail};
   }

@@ -12,9 +12,9 @@ namespace detail
 /// cloth: R cos θ with sin θ = (h − R)/R, the nose being h above the cloth.
 double cushionReach(const Table& table, double radius);
 
-/// Unit normal of the cushion contact (from the cushion towards the ball) for cushion `rail` (0: −x, 1: +x, 2: −y,
-/// 3: +y) when the ball's centre is at height z above the cloth.
-Eigen::Vector3d cushionNormal(int rail, const Table& table, double radius, double z);
+/// Unit normal of the cushion contact (from the nose towards the ball's centre) for cushion `rail` (0: −x, 1: +x,
+/// 2: −y, 3: +y), with the ball's centre at `centre` (table frame) touching the nose.
+Eigen::Vector3d cushionNormal(int rail, const Table& table, const Eigen::Vector3d& centre);
 
 struct Crossing
 {
@@ -22,7 +22,8 @@ struct Crossing
   int index;    ///< the rail or the pocket
 };
 
-/// The first time in (0, horizon] at which the ball, moving along `segment`, reaches a cushion while approaching it.
+/// The first time in (0, horizon] at which the ball, moving along `segment`, touches a cushion nose while approaching
+/// it, or, in the air, passes over a nose without touching it (then its bottom is above the nose).
 std::optional<Crossing> firstCushionHit(const MotionSegment& segment, const Table& table, double radius,
                                         double horizon);
 
