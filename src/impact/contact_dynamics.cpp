@@ -136,7 +136,7 @@ void ContactDynamics::followSlip(const double* y, Eigen::VectorXd& force) const
   }
 }
 
-void ContactDynamics::addLinkForces(Eigen::VectorXd& force) const
+Eigen::MatrixXd ContactDynamics::linkBasis() const
 {
   // Rigid links: unknown normal forces f keep their normal velocities constant (zero), (W F)_n = 0. A sliding
   // link's friction, −μ f ŝ, depends on its own unknown, so each link contributes a column B_r of F = F_s + B f.
@@ -150,13 +150,66 @@ void ContactDynamics::addLinkForces(Eigen::VectorXd& force) const
     if (contacts_[i].slipping)
       basis.block<2, 1>(row + 1, r) = -contacts_[i].friction * directions_[i];
   }
-  Eigen::MatrixXd normal_rows(links, space_.size);
-  for (Eigen::Index r = 0; r < links; ++r)
+  return basis;
+}
+
+Eigen::MatrixXd ContactDynamics::linkRows() const
+{
+  Eigen::MatrixXd normal_rows(static_cast<Eigen::Index>(rigid_contacts_.size()), space_.size);
+  for (Eigen::Index r = 0; r < normal_rows.rows(); ++r)
     normal_rows.row(r) = space_.delassus.row(space_.offset[rigid_contacts_[r]]);
+  return normal_rows;
+}
+
+void ContactDynamics::addLinkForces(Eigen::VectorXd& force) const
+{
+  const Eigen::MatrixXd basis = linkBasis(), normal_rows = linkRows();
   // Redundant links (a singular system) get the least-norm forces.
   const Eigen::VectorXd link_forces =
       (normal_rows * basis).completeOrthogonalDecomposition().solve(-(normal_rows * force));
   force += basis * link_forces;
+}
+
+Eigen::Vector2d ContactDynamics::directionRate(std::size_t contact, const Eigen::VectorXd& w,
+                                               const Eigen::VectorXd& force) const
+{
+  // The slip direction turns toward the tangential velocity at |(I − ŝŝᵀ)v_t| / ρ (see springRates).
+  const Eigen::Vector2d& direction = directions_[contact];
+  const Eigen::Vector2d v_t = w.segment<2>(space_.offset[contact] + 1);
+  return (v_t - direction * direction.dot(v_t)) / coneLength(contact, force);
+}
+
+double ContactDynamics::linkForceRate(std::size_t contact, const Eigen::VectorXd& w, const Eigen::VectorXd& force) const
+{
+  // Differentiating (W F)_L = 0 with F = F_s + B f: (W_L B) ḟ = −W_L (Ḟ_s + Ḃ f). The springs move with the contact
+  // velocities (ṡ_n = v_n, a sticking ṡ_t = v_t), a compliant sliding contact's friction −μF_nŝ and a sliding
+  // link's column −μŝ with their directions.
+  Eigen::VectorXd rate = Eigen::VectorXd::Zero(space_.size);
+  for (std::size_t i = 0; i < contacts_.size(); ++i)
+  {
+    const ContactState& state = contacts_[i];
+    const int row = space_.offset[i];
+    if (!state.active())
+      continue;
+    if (state.compliant())
+      rate(row) = -state.stiffness * w(row);
+    if (space_.dim[i] != 3)
+      continue;
+    if (!state.slipping)
+      rate.segment<2>(row + 1) = -state.kappa * w.segment<2>(row + 1);
+    else if (state.compliant())
+      rate.segment<2>(row + 1) =
+          -state.friction * (rate(row) * directions_[i] + force(row) * directionRate(i, w, force));
+    else
+      rate.segment<2>(row + 1) = -state.friction * force(row) * directionRate(i, w, force);
+  }
+  const Eigen::MatrixXd normal_rows = linkRows();
+  const Eigen::VectorXd rates =
+      (normal_rows * linkBasis()).completeOrthogonalDecomposition().solve(-(normal_rows * rate));
+  for (Eigen::Index r = 0; r < rates.size(); ++r)
+    if (rigid_contacts_[r] == contact)
+      return rates(r);
+  return 0.0;
 }
 
 double ContactDynamics::strainEnergy(std::size_t contact, const double* y) const
@@ -190,12 +243,18 @@ Eigen::Vector2d ContactDynamics::carrierDirection(std::size_t contact, const dou
   return length > relaxed ? Eigen::Vector2d(tangential / length) : contacts_[contact].slip_direction;
 }
 
-double ContactDynamics::slidingSpeed(std::size_t contact, const double* y, const Eigen::VectorXd& w) const
+double ContactDynamics::slidingSpeed(std::size_t contact, const double* y, const Eigen::VectorXd& w,
+                                     const Eigen::VectorXd& force) const
 {
   const ContactState& state = contacts_[contact];
   const int row = space_.offset[contact];
-  const Eigen::Vector2d tangential_velocity(w(row + 1), w(row + 2));
-  return springDirection(contact, y).dot(tangential_velocity) + state.friction * state.eta2() * w(row);
+  const double along = springDirection(contact, y).dot(w.segment<2>(row + 1));
+  if (state.phase != NormalPhase::RigidLink)
+    return along + state.friction * state.eta2() * w(row);
+  // A rigid link has v_n = 0, but its spring on the friction cone, ρ = μf/κ, still grows and shrinks with its
+  // force: σ = ŝ·v_t − ρ̇, the limit of the compliant contact's μη²v_n = −μḞ_n/κ. Without ρ̇ the link would slide
+  // on while the cone outgrows the slip, and stick again with spring energy that nothing paid for.
+  return along - state.friction * linkForceRate(contact, w, force) / state.kappa;
 }
 
 void ContactDynamics::springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w,

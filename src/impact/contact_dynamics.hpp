@@ -35,8 +35,12 @@ public:
   void forces(const double* y, Eigen::VectorXd& force) const;
   /// Normal plus tangential strain energy of contact i (dimensionless).
   double strainEnergy(std::size_t contact, const double* y) const;
-  /// Sliding speed σ = ŝ·v_t + μη²v_n of a slipping contact's particle (spec §2.6).
-  double slidingSpeed(std::size_t contact, const double* y, const Eigen::VectorXd& w) const;
+  /// Sliding speed σ = ŝ·v_t + μη²v_n of a slipping contact's particle (spec §2.6); for a rigid link, whose
+  /// v_n = 0, σ = ŝ·v_t − μḟ/κ. w and F are the contact velocities and forces at y.
+  double slidingSpeed(std::size_t contact, const double* y, const Eigen::VectorXd& w,
+                      const Eigen::VectorXd& force) const;
+  /// Rate ḟ of a rigid link's normal force, with w and F the contact velocities and forces at the same instant.
+  double linkForceRate(std::size_t contact, const Eigen::VectorXd& w, const Eigen::VectorXd& force) const;
   /// Slip direction ŝ of a sliding contact: its carrier's, or the quasi-steady one while it follows the slip.
   Eigen::Vector2d springDirection(std::size_t contact, const double* y) const;
 
@@ -62,6 +66,11 @@ private:
   /// Forces of the springs alone (rigid-link normals and sliding-link friction left at zero).
   void springForces(const double* y, Eigen::VectorXd& force) const;
   void addLinkForces(Eigen::VectorXd& force) const;
+  /// Columns B of the rigid links' forces (F = F_s + B f) and the rows W_L of their normal velocities.
+  Eigen::MatrixXd linkBasis() const;
+  Eigen::MatrixXd linkRows() const;
+  /// Turning rate of a sliding contact's direction ŝ.
+  Eigen::Vector2d directionRate(std::size_t contact, const Eigen::VectorXd& w, const Eigen::VectorXd& force) const;
 
   const ContactSpace& space_;
   const std::vector<ContactState>& contacts_;

@@ -202,7 +202,7 @@ double guardValue(const Guard& guard, const Kinematics& kinematics, const std::v
       return std::hypot(kinematics.force(row + 1), kinematics.force(row + 2)) -
              contact.friction * kinematics.force(row);
     case ContactEventType::SlipToStick:
-      return -dynamics.slidingSpeed(guard.contact, kinematics.y, kinematics.velocity);
+      return -dynamics.slidingSpeed(guard.contact, kinematics.y, kinematics.velocity, kinematics.force);
     case ContactEventType::RigidLink:
       break;
   }

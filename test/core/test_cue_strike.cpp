@@ -189,6 +189,61 @@ TEST(CueStrikeInvariants, RandomShots)
   EXPECT_EQ(checked, 200);
 }
 
+TEST(CueStrikeInvariants, RigidLinksThatSlideNeverGainEnergy)
+{
+  // Jammed strikes found by random sweeps: both contacts chatter into rigid links, which then slide while their
+  // forces grow, and stick again. Their sliding speed used to leave out the growth of the friction cone, ρ̇ = μḟ/κ,
+  // so the spring they stuck with held energy nothing had paid for: these left with 16 %, 43 % and 300 % more
+  // kinetic energy than they came with.
+  struct Jam
+  {
+    Eigen::Vector3d cue_direction, hit_normal;
+    double cue_speed, cue_mass;
+    bsp::SurfaceContact cue, table;
+    double stiffness_ratio;
+  };
+  const bsp::CueStrike masse = bsp::paperMasseStrike();
+  const Jam jams[] = {
+      {{-0.7871762474244407, -0.61672086546683802, -0.0029882417255300731},
+       {0.21503838406297757, -0.11679814832663615, 0.96959614578805564},
+       0.21788224214008192,
+       masse.cue_mass,
+       masse.cue_contact,
+       masse.table_contact,
+       masse.stiffness_ratio},
+      {{0.49941299877967876, -0.037731953054129991, -0.86554200150461169},
+       {-0.49941299877967876, 0.037731953054129991, 0.86554200150461169},
+       2.0831922779182488,
+       0.54190984148992172,
+       {0.10387289617134457, 0.64075709799307645, 6.7853144220855546},
+       {0.04804074207779279, 0.175589126929102, 2.460699860364413},
+       0.017544385182411134},
+      {{0.39791023202441128, -0.86637738193804037, -0.30175764997173815},
+       {0.53583349210556264, 0.45161813107161947, 0.71338876668008699},
+       1.3801049935786582,
+       0.70042339330260606,
+       {0.15710188014231929, 0.94689645405029577, 7.2690167193028881},
+       {0.278271958044981, 0.41525356309033856, 2.3628250367445074},
+       1.2653022278394035},
+  };
+  for (const Jam& jam : jams)
+  {
+    bsp::CueStrike strike = masse;
+    strike.cue_direction = jam.cue_direction;
+    strike.hit_normal = jam.hit_normal;
+    strike.cue_speed = jam.cue_speed;
+    strike.cue_mass = jam.cue_mass;
+    strike.cue_contact = jam.cue;
+    strike.table_contact = jam.table;
+    strike.stiffness_ratio = jam.stiffness_ratio;
+    const auto result = bsp::solve(strike);
+    ASSERT_TRUE(result.ok()) << result.error().describe();
+    const bsp::ImpactResult& impact = result.value().impact;
+    EXPECT_TRUE(impact.converged);  // the rigid-link limit was taken
+    EXPECT_LE(impact.final_kinetic_energy, impact.initial_kinetic_energy * (1 + 1e-9)) << jam.cue_speed;
+  }
+}
+
 TEST(CueStrikeInvariants, FrictionlessCentralHitIsBallBallTable)
 {
   // Spec §4.4 (4): μ = 0, n̂ = ẑ, ĉ = −ẑ is the paper's ball–ball–table collision with the cue as the upper ball.
