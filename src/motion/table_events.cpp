@@ -105,6 +105,8 @@ std::optional<double> airborneContact(const MotionSegment& segment, const Nose& 
       return passes;
     start = *near;
   }
+  if (start >= end)  // a segment shorter than the events' resolution
+    return passes;
   auto overlap = [&](double tau)
   {
     const Eigen::Vector3d centre = segment.at(segment.start_time + tau).position;
