@@ -14,6 +14,9 @@ namespace detail
 {
 namespace
 {
+/// Landing speed (m/s) below which a touch-down is no impact but round-off: the engine needs an approach.
+constexpr double TOUCH_DOWN_SPEED = 1e-9;
+
 /// Where one phase ends: by itself, at a cushion, in a pocket or at the time limit.
 struct SegmentEnd
 {
@@ -142,6 +145,13 @@ private:
   Expected<bool> land(BallState& state, double t)
   {
     state.position.z() = ball_.radius;
+    if (state.velocity.z() > -TOUCH_DOWN_SPEED)
+    {
+      // The round-off of a hop of nothing (a cushion hit that left v_z at 1e-16): no impact, the ball is on the cloth.
+      state.velocity.z() = 0.0;
+      trajectory_.events.push_back({MotionEventType::Landing, t, state});
+      return false;
+    }
     auto result = solve(BallTableImpact{ball_.mass, ball_.radius, state.velocity, state.angular_velocity, table_.cloth},
                         p_.impact);
     if (!result)
