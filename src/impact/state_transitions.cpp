@@ -191,8 +191,11 @@ double guardValue(const Guard& guard, const Kinematics& kinematics, const std::v
     case ContactEventType::EndOfCompression:
       return kinematics.velocity(row);
     case ContactEventType::RestartOfCompression:
-    case ContactEventType::Reactivation:
       return -kinematics.velocity(row);
+    case ContactEventType::Reactivation:
+      // Approaching by more than round-off: a released rigid link left touching at v_n = 0 with a force of 1e-18
+      // would otherwise cross zero again at the same instant and link and release for ever (random chains).
+      return -kinematics.velocity(row) - VELOCITY_TOLERANCE;
     case ContactEventType::Separation:
       return s[0];
     case ContactEventType::LinkRelease:
