@@ -170,13 +170,19 @@ void ContactDynamics::addLinkForces(Eigen::VectorXd& force) const
   force += basis * link_forces;
 }
 
-Eigen::Vector2d ContactDynamics::directionRate(std::size_t contact, const Eigen::VectorXd& w,
-                                               const Eigen::VectorXd& force) const
+Eigen::Vector2d ContactDynamics::directionRate(std::size_t contact, const Eigen::Vector2d& direction,
+                                               const Eigen::VectorXd& w, const Eigen::VectorXd& force) const
 {
-  // The slip direction turns toward the tangential velocity at |(I − ŝŝᵀ)v_t| / ρ (see springRates).
-  const Eigen::Vector2d& direction = directions_[contact];
+  // The slip direction turns toward the tangential velocity at |(I − ŝŝᵀ)v_t| / ρ, with ρ = μF_n/κ the cone's
+  // spring length, bounded below where the spring vanishes at separation (there the friction vanishes too).
+  return acrossSlip(contact, direction, w) / coneLength(contact, force);
+}
+
+Eigen::Vector2d ContactDynamics::acrossSlip(std::size_t contact, const Eigen::Vector2d& direction,
+                                            const Eigen::VectorXd& w) const
+{
   const Eigen::Vector2d v_t = w.segment<2>(space_.offset[contact] + 1);
-  return (v_t - direction * direction.dot(v_t)) / coneLength(contact, force);
+  return v_t - direction * direction.dot(v_t);
 }
 
 double ContactDynamics::linkForceRate(std::size_t contact, const Eigen::VectorXd& w, const Eigen::VectorXd& force) const
@@ -199,9 +205,9 @@ double ContactDynamics::linkForceRate(std::size_t contact, const Eigen::VectorXd
       rate.segment<2>(row + 1) = -state.kappa * w.segment<2>(row + 1);
     else if (state.compliant())
       rate.segment<2>(row + 1) =
-          -state.friction * (rate(row) * directions_[i] + force(row) * directionRate(i, w, force));
+          -state.friction * (rate(row) * directions_[i] + force(row) * directionRate(i, directions_[i], w, force));
     else
-      rate.segment<2>(row + 1) = -state.friction * force(row) * directionRate(i, w, force);
+      rate.segment<2>(row + 1) = -state.friction * force(row) * directionRate(i, directions_[i], w, force);
   }
   const Eigen::MatrixXd normal_rows = linkRows();
   const Eigen::VectorXd rates =
@@ -281,15 +287,13 @@ void ContactDynamics::springRates(std::size_t contact, const double* y, const Ei
     return;  // the direction follows the slip (followSlip); the carrier waits for the release
   // Slip: ṡ_t = v_t − σŝ (spec §2.6), whose radial part only keeps |s_t| = μη²|s_n| on the cone. The friction is
   // −μF_nŝ, so only the direction ŝ matters: the state carries it at a fixed length (never through zero, where it
-  // would flip) and turns it at the physical rate |(I − ŝŝᵀ)v_t| / ρ, with ρ = μF_n/κ the cone's spring length,
-  // bounded below where the spring vanishes at separation (there the friction vanishes too).
+  // would flip) and turns it at the physical rate, directionRate's, scaled by the carrier's length.
   const double* s = y + space_.size + row;
   const Eigen::Vector2d carrier(s[1], s[2]);
   const double length = carrier.norm();
   if (length == 0.0)
     return;
-  const Eigen::Vector2d direction = carrier / length;
-  tangential_rate = (length / coneLength(contact, force)) * (v_t - direction * direction.dot(v_t));
+  tangential_rate = (length / coneLength(contact, force)) * acrossSlip(contact, carrier / length, w);
 }
 
 double ContactDynamics::coneLength(std::size_t contact, const Eigen::VectorXd& force) const

@@ -69,8 +69,11 @@ private:
   /// Columns B of the rigid links' forces (F = F_s + B f) and the rows W_L of their normal velocities.
   Eigen::MatrixXd linkBasis() const;
   Eigen::MatrixXd linkRows() const;
-  /// Turning rate of a sliding contact's direction ŝ.
-  Eigen::Vector2d directionRate(std::size_t contact, const Eigen::VectorXd& w, const Eigen::VectorXd& force) const;
+  /// Part of a contact's tangential velocity across its slip direction ŝ = `direction`, (I − ŝŝᵀ)v_t.
+  Eigen::Vector2d acrossSlip(std::size_t contact, const Eigen::Vector2d& direction, const Eigen::VectorXd& w) const;
+  /// Turning rate of a sliding contact's slip direction ŝ = `direction`.
+  Eigen::Vector2d directionRate(std::size_t contact, const Eigen::Vector2d& direction, const Eigen::VectorXd& w,
+                                const Eigen::VectorXd& force) const;
 
   const ContactSpace& space_;
   const std::vector<ContactState>& contacts_;
