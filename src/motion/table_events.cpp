@@ -13,6 +13,16 @@ namespace
 /// Times below this (s) after a segment start are the event that started it.
 constexpr double MIN_EVENT_SEPARATION = 1e-12;
 
+/// The zero of f in the bracket [lo, hi] (f changes sign between them), located with TOMS 748 to 1e-13 s: the upper
+/// end of the final bracket, so that the event has numerically happened.
+template <class Function>
+double locateEvent(Function f, double lo, double hi, double f_lo, double f_hi)
+{
+  std::uintmax_t iterations = 100;
+  auto tolerance = [](double a, double b) { return b - a <= 1e-13 * std::max(1.0, b); };
+  return boost::math::tools::toms748_solve(f, lo, hi, f_lo, f_hi, tolerance, iterations).second;
+}
+
 /// The smallest root in (lo, hi] of c + b τ + ½ a τ² = 0 at which the function rises through zero, if any.
 std::optional<double> firstRisingRoot(double c, double b, double a, double lo, double hi)
 {
@@ -118,11 +128,7 @@ std::optional<double> airborneContact(const MotionSegment& segment, const Nose& 
   {
     const double hi = start + (end - start) * k / NOSE_SAMPLES, f_hi = overlap(hi);
     if (f_lo <= 0.0 && f_hi > 0.0)
-    {
-      std::uintmax_t iterations = 100;
-      auto tolerance = [](double l, double h) { return h - l <= 1e-13 * std::max(1.0, h); };
-      return boost::math::tools::toms748_solve(overlap, lo, hi, f_lo, f_hi, tolerance, iterations).second;
-    }
+      return locateEvent(overlap, lo, hi, f_lo, f_hi);
     lo = hi;
     f_lo = f_hi;
   }
@@ -174,10 +180,7 @@ std::optional<Crossing> firstPocketEntry(const MotionSegment& segment, const Tab
       const double b = end * k / samples, fb = outside(b);
       if (fb <= 0.0)
       {
-        std::uintmax_t iterations = 100;
-        auto tolerance = [](double lo, double hi) { return hi - lo <= 1e-13 * std::max(1.0, hi); };
-        const auto root = boost::math::tools::toms748_solve(outside, a, b, fa, fb, tolerance, iterations);
-        best = Crossing{root.second, static_cast<int>(i)};
+        best = Crossing{locateEvent(outside, a, b, fa, fb), static_cast<int>(i)};
         break;
       }
       a = b;
