@@ -134,13 +134,6 @@ TransitionEvents activate(std::size_t index, const Kinematics& kinematics, doubl
 }
 }  // namespace
 
-Kinematics evaluateKinematics(const ContactDynamics& dynamics, const double* y)
-{
-  Kinematics kinematics{};
-  evaluateKinematics(dynamics, y, kinematics);
-  return kinematics;
-}
-
 void evaluateKinematics(const ContactDynamics& dynamics, const double* y, Kinematics& kinematics)
 {
   kinematics.y = y;

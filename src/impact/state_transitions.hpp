@@ -37,8 +37,7 @@ struct Kinematics
   Eigen::VectorXd force;     ///< contact forces F
 };
 
-Kinematics evaluateKinematics(const ContactDynamics& dynamics, const double* y);
-/// The same into an existing Kinematics, reusing its vectors.
+/// Relative velocity and forces at y, into an existing Kinematics (its vectors reused).
 void evaluateKinematics(const ContactDynamics& dynamics, const double* y, Kinematics& kinematics);
 
 /// Guards armed by the current discrete state, into `guards` (returned).
