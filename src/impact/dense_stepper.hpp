@@ -3,6 +3,7 @@
 #include "fast_binomial.hpp"  // before Odeint
 
 #include <boost/numeric/odeint.hpp>
+#include <optional>
 
 #include "contact_dynamics.hpp"
 
@@ -12,22 +13,29 @@ namespace detail
 {
 /// Bulirsch–Stoer extrapolation with dense output: between events the spring dynamics is smooth (analytic), so a
 /// high-order method reaches 1e-12 in far fewer steps than a fifth-order Runge–Kutta.
-using DenseStepper = boost::numeric::odeint::bulirsch_stoer_dense_out<OdeState>;
-
-/// Settings shared by the numerical steppers of one state.
-struct IntegrationSettings
+///
+/// Restartable without allocating: Odeint's stepper holds some 250 small vectors (its extrapolation tableau), and
+/// constructing one per state cost a sixth of the massé strike. A restart keeps the tableau's storage and the
+/// extrapolation order the last state settled on (Odeint offers no way to reset it; a fresh stepper starts at 4).
+class DenseStepper : public boost::numeric::odeint::bulirsch_stoer_dense_out<OdeState>
 {
-  double absolute_tolerance;
-  double relative_tolerance;
-  double max_step;
-  double first_step;
+  using Base = boost::numeric::odeint::bulirsch_stoer_dense_out<OdeState>;
+
+public:
+  /// The tolerances are fixed for the stepper's life; the step bound and first step are set at each restart.
+  DenseStepper(double absolute_tolerance, double relative_tolerance)
+      : Base(absolute_tolerance, relative_tolerance, 1.0, 1.0, 0.0, /*control_interpolation=*/true)
+  {
+  }
+
+  /// Starts a new integration at (y0, t0) with steps bounded by max_step (0: unbounded). The state's size must
+  /// stay the same (Odeint sizes its storage once).
+  void restart(const OdeState& y0, double t0, double max_step, double first_step)
+  {
+    m_max_dt = max_step;
+    initialize(y0, t0, first_step);
+  }
 };
-
-inline DenseStepper makeDenseStepper(const IntegrationSettings& settings)
-{
-  return DenseStepper(settings.absolute_tolerance, settings.relative_tolerance, 1.0, 1.0, settings.max_step,
-                      /*control_interpolation=*/true);
-}
 
 }  // namespace detail
 }  // namespace billiard_shot_planner

@@ -251,17 +251,19 @@ private:
     if (options_.closed_form_linear_phases && tryClosedForm())
       return advanceWith(closed_form_);
     omega_ = fastestFrequency();
-    IntegrationSettings settings{options_.absolute_tolerance, options_.relative_tolerance, 0.5 / omega_, 0.01 / omega_};
+    const double first_step = 0.01 / omega_;
     if (options_.separation_clock &&
         std::any_of(contacts_.begin(), contacts_.end(), [](const ContactState& c) { return c.slidingInRestitution(); }))
     {
-      settings.max_step = 0.0;  // unbounded in u: guardSamples subdivides long steps instead
-      SeparationClockStepper stepper(dynamics_, y_, t_, settings);
-      return advanceWith(stepper);
+      if (!clock_stepper_)
+        clock_stepper_.emplace(dynamics_, options_.absolute_tolerance, options_.relative_tolerance);
+      clock_stepper_->restart(y_, t_, first_step);
+      return advanceWith(*clock_stepper_);
     }
-    DenseStepper stepper = makeDenseStepper(settings);
-    stepper.initialize(y_, t_, settings.first_step);
-    return advanceWith(stepper);
+    if (!plain_stepper_)
+      plain_stepper_.emplace(options_.absolute_tolerance, options_.relative_tolerance);
+    plain_stepper_->restart(y_, t_, 0.5 / omega_, first_step);
+    return advanceWith(*plain_stepper_);
   }
 
   template <class Stepper>
@@ -441,6 +443,9 @@ private:
   std::vector<ContactState> contacts_;
   ContactDynamics dynamics_;
   LinearPhaseStepper closed_form_;  ///< rebuilt at every linear state (its storage kept)
+  /// Numerical steppers, made at their first use and restarted at every state (their storage kept).
+  std::optional<DenseStepper> plain_stepper_;
+  std::optional<SeparationClockStepper> clock_stepper_;
   ChatterLimit chatter_{};
   OdeState y_;
   mutable OdeState buffer_;                 ///< scratch state for dense-output evaluations

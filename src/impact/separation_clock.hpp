@@ -26,12 +26,17 @@ namespace detail
 class SeparationClockStepper
 {
 public:
-  SeparationClockStepper(const ContactDynamics& dynamics, const OdeState& y0, double t0,
-                         const IntegrationSettings& settings)
-      : system_{dynamics}, stepper_(makeDenseStepper(settings)), extended_(y0)
+  SeparationClockStepper(const ContactDynamics& dynamics, double absolute_tolerance, double relative_tolerance)
+      : system_{dynamics}, stepper_(absolute_tolerance, relative_tolerance)
   {
+  }
+
+  /// Starts at (y0, t0) with physical time t = u; the steps in u are unbounded (the solver subdivides long ones).
+  void restart(const OdeState& y0, double t0, double first_step)
+  {
+    extended_.assign(y0.begin(), y0.end());
     extended_.push_back(t0);
-    stepper_.initialize(extended_, t0, settings.first_step);
+    stepper_.restart(extended_, t0, 0.0, first_step);
   }
 
   template <class System>
