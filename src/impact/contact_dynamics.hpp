@@ -52,7 +52,11 @@ public:
   double rates(const double* y, double* dydt) const;
 
 private:
-  void springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w, const Eigen::VectorXd& force,
+  /// w = w0 + W I for a contact space of N rows.
+  template <int N>
+  void addImpulseResponse(const double* y, Eigen::VectorXd& velocity) const;
+  /// Rates of contact i's springs; cone_length is its coneLength() when it slides.
+  void springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w, double cone_length,
                    double* rates) const;
   /// Spring length of a sliding contact on its friction cone, ρ = μF_n/κ, bounded below (smoothly) where the
   /// spring vanishes.
