@@ -52,12 +52,14 @@ Eigen::VectorXd ContactDynamics::relativeVelocity(const double* y) const
 
 void ContactDynamics::relativeVelocity(const double* y, Eigen::VectorXd& velocity) const
 {
-  // The integrator calls this thousands of times per solve. On the sizes of one ball's contacts Eigen's dynamic
-  // product spends more on set-up than on arithmetic; a fixed-size product is unrolled and vectorised (a third of
-  // the instructions on the cue strike's 6 rows).
+  // The integrator and the guard samples call this thousands of times per solve. On the sizes of one ball's
+  // contacts Eigen's dynamic product spends more on set-up than on arithmetic; a fixed-size product is unrolled and
+  // vectorised (a third of the instructions on the cue strike's 6 rows, a fifth on ball–ball–table's 2).
   velocity.resize(space_.size);
   switch (space_.size)
   {
+    case 2:
+      return addImpulseResponse<2>(y, velocity);
     case 3:
       return addImpulseResponse<3>(y, velocity);
     case 6:
