@@ -81,22 +81,26 @@ void ContactDynamics::addImpulseResponse(const double* y, Eigen::VectorXd& veloc
 
 void ContactDynamics::springForces(const double* y, Eigen::VectorXd& force) const
 {
+  // Every row written once (the contacts' rows tile contact space): this runs at every right-hand side.
   const double* s = y + space_.size;
-  force.setZero(space_.size);
+  force.resize(space_.size);
+  double* f = force.data();
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
     const ContactState& contact = contacts_[i];
     const int row = space_.offset[i];
-    if (contact.compliant())
-      force(row) = -contact.stiffness * s[row];
-    if (!contact.active() || space_.dim[i] != 3)
+    f[row] = contact.compliant() ? -contact.stiffness * s[row] : 0.0;
+    if (space_.dim[i] != 3)
       continue;
-    if (!contact.slipping)
-      force.segment<2>(row + 1) = -contact.kappa * Eigen::Vector2d(s[row + 1], s[row + 2]);
-    else if (contact.compliant())
+    Eigen::Map<Eigen::Vector2d> tangential(f + row + 1);
+    if (contact.active() && !contact.slipping)
+      tangential = -contact.kappa * Eigen::Vector2d(s[row + 1], s[row + 2]);
+    else if (contact.active() && contact.compliant())
       // Sliding: friction on the cone, −μ F_n ŝ. Equal to −κ s_t on the exact solution, but bounded by the cone
       // even where the spring shrinks to nothing at separation and its integrated length loses accuracy.
-      force.segment<2>(row + 1) = -contact.friction * force(row) * directions_[i];
+      tangential = -contact.friction * f[row] * directions_[i];
+    else
+      tangential.setZero();  // inactive, or a sliding rigid link (its friction comes with its force, addLinkForces)
   }
 }
 
