@@ -3,7 +3,6 @@
 #include "fast_binomial.hpp"  // before Odeint
 
 #include <boost/numeric/odeint.hpp>
-#include <optional>
 
 #include "contact_dynamics.hpp"
 
@@ -15,7 +14,7 @@ namespace detail
 /// high-order method reaches 1e-12 in far fewer steps than a fifth-order Runge–Kutta.
 ///
 /// Restartable without allocating: Odeint's stepper holds some 250 small vectors (its extrapolation tableau), and
-/// constructing one per state cost a sixth of the massé strike. A restart keeps the tableau's storage and the
+/// constructing one per state cost up to a sixth of the massé strike. A restart keeps the tableau's storage and the
 /// extrapolation order the last state settled on (Odeint offers no way to reset it; a fresh stepper starts at 4).
 class DenseStepper : public boost::numeric::odeint::bulirsch_stoer_dense_out<OdeState>
 {
