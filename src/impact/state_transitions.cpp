@@ -11,6 +11,11 @@ namespace
 /// Dimensionless thresholds below which a velocity or force is round-off (the normalised state is of order one).
 constexpr double VELOCITY_TOLERANCE = 1e-12;
 constexpr double FORCE_TOLERANCE = 1e-12;
+/// A touching contact without force is let go only while it approaches slower than this, half the approach at
+/// which an inactive contact reactivates (VELOCITY_TOLERANCE). With one threshold for both, a contact reactivated
+/// at its guard's root, approaching at exactly the threshold, was let go at once, and reactivated again at the same
+/// instant for ever (a grazing cushion hit of a random table sweep).
+constexpr double RELEASE_VELOCITY = 0.5 * VELOCITY_TOLERANCE;
 
 double* springs(double* y, const ContactSpace& space, std::size_t contact)
 {
@@ -263,7 +268,7 @@ bool nothingCanLoad(const Kinematics& kinematics, const std::vector<ContactState
   for (std::size_t i = 0; i < contacts.size(); ++i)
   {
     const int row = space.offset[i];
-    if (kinematics.velocity(row) < -VELOCITY_TOLERANCE)
+    if (kinematics.velocity(row) < -RELEASE_VELOCITY)
       return false;
     const bool sticking = contacts[i].active() && space.dim[i] == 3 && !contacts[i].slipping;
     if (sticking && kinematics.velocity.segment<2>(row + 1).norm() > VELOCITY_TOLERANCE)
@@ -307,7 +312,7 @@ std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std
           return Guard{i, ContactEventType::EndOfCompression};
         [[fallthrough]];
       case NormalPhase::Restitution:
-        if (s_n >= 0.0 && std::abs(v_n) <= VELOCITY_TOLERANCE && nothingCanLoad(kinematics, contacts, space))
+        if (s_n >= 0.0 && std::abs(v_n) <= RELEASE_VELOCITY && nothingCanLoad(kinematics, contacts, space))
           return Guard{i, ContactEventType::Separation};
         break;
     }

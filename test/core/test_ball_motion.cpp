@@ -304,6 +304,38 @@ TEST(Cushion, AtTheHeightOfTheCentreTheClothNeverLoads)
   }
 }
 
+TEST(Cushion, AContactReactivatedAtItsThresholdLoadsInsteadOfBeingLetGo)
+{
+  // From a random table sweep: a ball whose spin curls it back into a soft cushion (e 0.19) meets it at 5e-12 m/s.
+  // The cushion contact separates, then reactivates at its guard's root, approaching at exactly the threshold of
+  // reactivation. The rule that lets go of a contact touching without force took that approach for none: the
+  // contact was let go at once and reactivated at the same instant until the event bound (200 000 events).
+  bsp::CushionImpact hit;
+  hit.velocity = {0.84223154723387328, -5.3852930112494759e-12, 0.0};
+  hit.angular_velocity = {0.0040839865442658975, 39.310115375068428, 25.463927966066368};
+  hit.cushion_normal = {0.0, 0.7196455183388788, -0.69434165072733944};
+  hit.on_cloth = true;
+  hit.radius = 0.0214249249257841;
+  hit.cloth = {0.080154259562920341, 0.22004573157468907, 1.6326594446956579};
+  hit.cushion = {0.1948320499701551, 0.17072985525299081, 7.4442029288128175};
+  hit.stiffness_ratio = 4.5272282433105282;
+  const auto result = bsp::solve(hit);
+  ASSERT_TRUE(result.ok()) << result.error().describe();
+  const bsp::ImpactResult& impact = result.value().impact;
+  EXPECT_LT(impact.events.size(), 20u);
+  int reactivations = 0;
+  for (std::size_t k = 0; k + 1 < impact.events.size(); ++k)
+  {
+    if (impact.events[k].type != bsp::ContactEventType::Reactivation)
+      continue;
+    ++reactivations;
+    EXPECT_EQ(impact.events[k + 1].type, bsp::ContactEventType::EndOfCompression);
+    EXPECT_EQ(impact.events[k + 1].contact, impact.events[k].contact);
+  }
+  EXPECT_EQ(reactivations, 1);
+  EXPECT_LE(impact.final_kinetic_energy, impact.initial_kinetic_energy * (1.0 + 1e-12));
+}
+
 TEST(Cushion, RandomHitsAndLandingsEndAndLoseEnergy)
 {
   // Any incidence, spin and cushion height (nose below, at or above the ball's centre), on the cloth or in the
