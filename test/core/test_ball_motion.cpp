@@ -372,6 +372,58 @@ TEST(Cushion, TheClothUnderANoseBelowTheCentreLetsGoAtOnce)
   EXPECT_LE(impact.final_kinetic_energy, impact.initial_kinetic_energy * (1.0 + 1e-12));
 }
 
+TEST(Cushion, AGrazingHitWhoseContactsBarelyLoadEnds)
+{
+  // From a random table sweep: spin curls the ball back into a soft cushion (e 0.08), which it meets at 5e-8 m/s.
+  // Both contacts then slide with friction cones of length 1e-8 (dimensionless). The cloth's direction was
+  // integrated — it had been fixed in a linear state before — and turned at |v_t|/ρ: 300 000 steps of 5e-6, then
+  // the step bound. Now a sliding contact whose cone is that short follows its slip quasi-steadily.
+  bsp::CushionImpact hit;
+  hit.velocity = {-4.7415650383525699e-08, 1.1704347889257103, 0.0};
+  hit.angular_velocity = {-33.308179561275331, -16.07797448399953, 50.915517919966952};
+  hit.cushion_normal = {0.78446997328822621, 0.0, -0.62016680095694388};
+  hit.on_cloth = true;
+  hit.radius = 0.033871492077414245;
+  hit.cloth = {0.091595829160741549, 0.33505336153968185, 13.924299933076691};
+  hit.cushion = {0.0762088460132294, 0.2134698409515208, 1.7641201985977455};
+  hit.stiffness_ratio = 7.811801976851882;
+  const auto result = bsp::solve(hit);
+  ASSERT_TRUE(result.ok()) << result.error().describe();
+  const bsp::ImpactResult& impact = result.value().impact;
+  EXPECT_LT(impact.events.size(), 30u);
+  EXPECT_LE(impact.final_kinetic_energy, impact.initial_kinetic_energy * (1.0 + 1e-12));
+  // A graze: the velocity along the rail and the spin barely change.
+  EXPECT_NEAR(result.value().velocity.y(), hit.velocity.y(), 1e-6);
+  EXPECT_LT((result.value().angular_velocity - hit.angular_velocity).norm(), 1e-4);
+  EXPECT_LE(result.value().velocity.dot(hit.cushion_normal), 1e-12);  // not into the cushion any more
+}
+
+TEST(Cushion, ABallCurlingIntoASoftCushionIsPredicted)
+{
+  // The whole path of the sweep's table above: a Zeno sequence of ever-smaller cushion hits (2e-3, 6e-5, 1e-6,
+  // 4e-8 m/s) used to end in the step bound. It must now end, pocketed.
+  bsp::Table table;
+  table.cushion_height = 0.054877466962702667;
+  table.cloth = {0.091595829160741549, 0.33505336153968185, 13.924299933076691};
+  table.cushion = {0.0762088460132294, 0.2134698409515208, 1.7641201985977455};
+  table.cushion_stiffness_ratio = 7.811801976851882;
+  bsp::MotionParameters p;
+  p.sliding_friction = 0.11261994609757389;
+  p.rolling_friction = 0.043706731396202146;
+  p.spinning_friction = 0.010781506537503247;
+  p.rolling_model = bsp::RollingModel::Pooltool;
+  bsp::BallState start;
+  start.position << 0.49933085954083634, -0.34519807284493736, 0.033871492077414245;
+  start.velocity << -4.6846204838423384, 1.6686265572513594, 0.39360068737174386;
+  start.angular_velocity << -30.343797850137598, -130.77481513384362, 39.227599195920668;
+  const auto t = predicted(start, table, p, 0.033871492077414245);
+  EXPECT_EQ(t.outcome, bsp::MotionOutcome::Pocketed);
+  int hits = 0;
+  for (const auto& e : t.events)
+    hits += e.type == Type::CushionHit ? 1 : 0;
+  EXPECT_GE(hits, 4);
+}
+
 TEST(Cushion, RandomHitsAndLandingsEndAndLoseEnergy)
 {
   // Any incidence, spin and cushion height (nose below, at or above the ball's centre), on the cloth or in the
