@@ -321,8 +321,7 @@ void ContactDynamics::springRates(std::size_t contact, const double* y, const Ei
 
 double ContactDynamics::coneLength(std::size_t contact, const Eigen::VectorXd& force) const
 {
-  const ContactState& state = contacts_[contact];
-  const double rho = state.friction * force(space_.offset[contact]) / state.kappa;
+  const double rho = contacts_[contact].coneLength(force(space_.offset[contact]));
   return std::sqrt(rho * rho + SLIP_LENGTH_FLOOR * SLIP_LENGTH_FLOOR);  // ρ is of order one: no overflow to guard
 }
 

@@ -45,6 +45,8 @@ struct ContactState
   bool followsSlip() const { return sliding() && quasi_steady; }
   /// Sliding while its normal spring relaxes: the cone shrinks toward a separation (see SeparationClockStepper).
   bool slidingInRestitution() const { return slipping && phase == NormalPhase::Restitution; }
+  /// Length of the tangential spring on the friction cone under a normal force F_n, ρ = μF_n/κ (dimensionless).
+  double coneLength(double normal_force) const { return friction * normal_force / kappa; }
   /// Current η² = k/κ; grows by 1/e² with k at every end of compression (spec §2.4).
   double eta2() const { return stiffness / kappa; }
 };

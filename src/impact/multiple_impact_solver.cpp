@@ -262,7 +262,7 @@ private:
     for (std::size_t i = 0; i < contacts_.size(); ++i)
     {
       ContactState& contact = contacts_[i];
-      const double cone = contact.friction * event_kinematics_.force(space_.offset[i]) / contact.kappa;
+      const double cone = contact.coneLength(event_kinematics_.force(space_.offset[i]));
       if (!contact.sliding() || contact.quasi_steady || cone >= QUASI_STEADY_CONE_LENGTH)
         continue;
       const Eigen::Vector2d integrated = dynamics_.springDirection(i, y_.data());

@@ -183,7 +183,7 @@ double guardValue(const Guard& guard, const Kinematics& kinematics, const std::v
   const double* s = kinematics.y + space.size + row;
   const ContactState& contact = contacts[guard.contact];
   if (guard.releases_direction)
-    return contact.friction * kinematics.force(row) / contact.kappa - QUASI_STEADY_CONE_LENGTH;
+    return contact.coneLength(kinematics.force(row)) - QUASI_STEADY_CONE_LENGTH;
   switch (guard.type)
   {
     case ContactEventType::EndOfCompression:
