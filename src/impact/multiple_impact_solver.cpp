@@ -350,7 +350,6 @@ private:
     }
   }
 
-  /// The state at t of the current step into buffer_, with its kinematics into kinematics_buffer_.
   /// Guard values at the start of a numerically integrated state, from the state itself into the first row of
   /// guard_values_. Odeint's interpolant reproduces the state there only to round-off, and a guard that starts at
   /// zero — a contact with v_n = 0 about to separate — could come out at +1e-18 and its crossing be missed: the
@@ -360,15 +359,14 @@ private:
   bool sampleStart(const Stepper& /*stepper*/, const std::vector<Guard>& guards)
   {
     evaluateKinematics(dynamics_, y_.data(), kinematics_buffer_);
-    for (std::size_t g = 0; g < guards.size(); ++g)
-      guard_values_(0, static_cast<Eigen::Index>(g)) =
-          guardValue(guards[g], kinematics_buffer_, contacts_, dynamics_, space_);
+    storeGuardRow(0, guards);
     return true;
   }
 
   /// The closed form is exact at its start, and its samples take their forces from its modes throughout.
   bool sampleStart(const LinearPhaseStepper& /*stepper*/, const std::vector<Guard>& /*guards*/) { return false; }
 
+  /// The state at t of the current step into buffer_, with its kinematics into kinematics_buffer_.
   template <class Stepper>
   void evaluateAt(const Stepper& stepper, double t) const
   {
@@ -397,10 +395,16 @@ private:
     for (int k = first_row_known ? 1 : 0; k <= samples_; ++k)
     {
       evaluateAt(stepper, sampleTime(t0, t1, k));
-      for (std::size_t g = 0; g < guards.size(); ++g)
-        guard_values_(k, static_cast<Eigen::Index>(g)) =
-            guardValue(guards[g], kinematics_buffer_, contacts_, dynamics_, space_);
+      storeGuardRow(k, guards);
     }
+  }
+
+  /// Every guard's value at kinematics_buffer_ into row k of guard_values_.
+  void storeGuardRow(int k, const std::vector<Guard>& guards) const
+  {
+    for (std::size_t g = 0; g < guards.size(); ++g)
+      guard_values_(k, static_cast<Eigen::Index>(g)) =
+          guardValue(guards[g], kinematics_buffer_, contacts_, dynamics_, space_);
   }
 
   double sampleTime(double t0, double t1, int k) const { return k == samples_ ? t1 : t0 + (t1 - t0) * k / samples_; }
