@@ -85,7 +85,7 @@ private:
   bool any_quasi_steady_ = false;
   mutable std::vector<Eigen::Vector2d> directions_;  ///< slip directions of the last force evaluation
   mutable Eigen::VectorXd follow_velocity_;          ///< scratch of followSlip
-  mutable Eigen::VectorXd follow_force_;             ///< scratch of springDirection
+  mutable Eigen::VectorXd follow_force_;             ///< scratch of springDirection and strainEnergy
   mutable Eigen::VectorXd velocity_scratch_;         ///< for operator(), called by the integrator
   mutable Eigen::VectorXd force_scratch_;
 };
