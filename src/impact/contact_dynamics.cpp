@@ -252,13 +252,16 @@ double ContactDynamics::strainEnergy(std::size_t contact, const double* y) const
     return normal;
   if (!state.slipping)
     return normal + 0.5 * state.kappa * (s[1] * s[1] + s[2] * s[2]);
-  // On the cone (the spring state only carries the direction): E_t = ½κρ², ρ = μF_n/κ. A rigid link's F_n is its
-  // constraint force, so it is read from the forces; a compliant contact's gives E_t = μ²η²E_n.
-  if (state.compliant())
-    return normal * (1.0 + state.friction * state.friction * state.eta2());
-  forces(y, follow_force_);
-  const double cone = state.coneLength(follow_force_(space_.offset[contact]));
-  return 0.5 * state.kappa * cone * cone;
+  // On the cone (the spring state only carries the direction): E_t = ½κρ², ρ = μF_n/κ, with F_n the spring's force
+  // (then E_t = μ²η²E_n) or a rigid link's constraint force, read from the forces.
+  double normal_force = -state.stiffness * s[0];
+  if (!state.compliant())
+  {
+    forces(y, follow_force_);
+    normal_force = follow_force_(space_.offset[contact]);
+  }
+  const double cone = state.coneLength(normal_force);
+  return normal + 0.5 * state.kappa * cone * cone;
 }
 
 Eigen::Vector2d ContactDynamics::springDirection(std::size_t contact, const double* y) const
