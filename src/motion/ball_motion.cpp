@@ -17,6 +17,12 @@ namespace
 /// Landing speed (m/s) below which a touch-down is no impact but round-off: the engine needs an approach.
 constexpr double TOUCH_DOWN_SPEED = 1e-9;
 
+/// Cushion speed (m/s) below which a ball that comes back to the cushion it just left is pressed against it: the
+/// Zeno sequence of hits has converged (what is left of it lasts some 1e-5 s). In 3 000 random shots near a rail,
+/// the sequences that end with the ball leaving the rail never went below 8e-4 m/s; those that do not went on to
+/// 1e-12 m/s and then through the cushion.
+constexpr double SUSTAINED_CONTACT_SPEED = 1e-6;
+
 /// Where one phase ends: by itself, at a cushion, in a pocket or at the time limit.
 struct SegmentEnd
 {
@@ -129,6 +135,12 @@ private:
     const Eigen::Vector3d normal = cushionNormal(rail, table_, state.position);
     if (state.velocity.dot(normal) >= 0.0)
       return false;  // grazing the nose in the air, to round-off: nothing to resolve, the flight goes on
+    if (on_cloth && pressedAgainst(rail, state))
+    {
+      trajectory_.events.push_back({MotionEventType::CushionContact, t, state, rail});
+      trajectory_.outcome = MotionOutcome::AgainstCushion;
+      return true;
+    }
     CushionImpact impact{ball_.mass, ball_.radius,   state.velocity, state.angular_velocity,        normal,
                          on_cloth,   table_.cushion, table_.cloth,   table_.cushion_stiffness_ratio};
     auto result = solve(impact, p_.impact);
@@ -139,7 +151,25 @@ private:
     if (p_.planar)
       state.velocity.z() = 0.0;
     trajectory_.events.push_back({MotionEventType::CushionHit, t, state, rail});
+    last_hit_ = {on_cloth ? rail : -1, -speedTowards(rail, state)};
     return false;
+  }
+
+  /// Horizontal speed of the ball's centre towards cushion `rail` (0: −x, 1: +x, 2: −y, 3: +y).
+  static double speedTowards(int rail, const BallState& state)
+  {
+    const int axis = rail / 2;
+    return rail % 2 == 1 ? state.velocity(axis) : -state.velocity(axis);
+  }
+
+  /// Whether the ball, on the cloth, has come back to the cushion it last left from the cloth, both times slower than
+  /// SUSTAINED_CONTACT_SPEED: its spin presses it into the rail. The hits would go on as a Zeno sequence of ever
+  /// smaller ones until the last, approaching to round-off, was missed and the ball went through the cushion (6 of
+  /// 3 000 random shots near a rail, up to 0.5 m off the table). Sustained contact is not modelled: the path ends.
+  bool pressedAgainst(int rail, const BallState& state) const
+  {
+    return last_hit_.rail == rail && last_hit_.rebound_speed < SUSTAINED_CONTACT_SPEED &&
+           speedTowards(rail, state) < SUSTAINED_CONTACT_SPEED;
   }
 
   Expected<bool> land(BallState& state, double t)
@@ -175,6 +205,11 @@ private:
   const Table& table_;
   const MotionParameters& p_;
   BallTrajectory trajectory_;
+  struct CushionHitRecord
+  {
+    int rail = -1;               ///< -1 when the last hit was in the air
+    double rebound_speed = 0.0;  ///< m/s, horizontally away from the cushion
+  } last_hit_;
 };
 }  // namespace
 }  // namespace detail

@@ -38,6 +38,8 @@ const char* toString(MotionEventType type)
       return "spin_stop";
     case MotionEventType::CushionHit:
       return "cushion_hit";
+    case MotionEventType::CushionContact:
+      return "cushion_contact";
     case MotionEventType::Pocketed:
       return "pocketed";
     case MotionEventType::Rest:
@@ -58,6 +60,8 @@ const char* toString(MotionOutcome outcome)
       return "pocketed";
     case MotionOutcome::OffTable:
       return "off_table";
+    case MotionOutcome::AgainstCushion:
+      return "against_cushion";
     case MotionOutcome::TimeLimit:
       return "time_limit";
   }

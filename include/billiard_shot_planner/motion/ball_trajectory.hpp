@@ -31,16 +31,20 @@ enum class MotionEventType
   RollToSpin,   ///< planar velocity reaches zero
   SpinStop,     ///< spin about z reaches zero
   CushionHit,   ///< a multiple impact with the cushion nose and the cloth
-  Pocketed,     ///< the centre enters a pocket's capture region
-  Rest,         ///< everything has stopped
-  TimeLimit,    ///< the trajectory was cut at MotionParameters::max_time or max_events
+  /// The ball comes back to the cushion it last left, both times slower than 1e-6 m/s: its spin presses it against
+  /// the cushion (sustained contact, not modelled; the path ends)
+  CushionContact,
+  Pocketed,   ///< the centre enters a pocket's capture region
+  Rest,       ///< everything has stopped
+  TimeLimit,  ///< the trajectory was cut at MotionParameters::max_time or max_events
 };
 
 enum class MotionOutcome
 {
   Rest,
   Pocketed,
-  OffTable,  ///< jumped over a cushion
+  OffTable,        ///< jumped over a cushion
+  AgainstCushion,  ///< pressed against a cushion, where sustained contact would begin (not modelled)
   TimeLimit,
 };
 
