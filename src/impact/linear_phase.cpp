@@ -1,6 +1,7 @@
 #include "linear_phase.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 namespace billiard_shot_planner
@@ -120,6 +121,7 @@ bool LinearPhaseStepper::build(const ContactSpace& space, const std::vector<Cont
   base_state_ = y0;
   t0_ = t_ = t0;
   dynamics_ = &dynamics;
+  space_ = &space;
   readForceMap(space, contacts, dynamics);
   delassus_times_g_.noalias() = space.delassus * force_from_s_;
   dynamics.relativeVelocity(y0.data(), start_velocity_);
@@ -148,6 +150,7 @@ bool LinearPhaseStepper::build(const ContactSpace& space, const std::vector<Cont
   omega_ = modes_.eigenvalues().cwiseMax(0.0).cwiseSqrt();
   spring_from_modes_.noalias() = sqrt_k_.cwiseInverse().asDiagonal() * modes_.eigenvectors();
   force_from_modes_.noalias() = force_from_s_ * spring_from_modes_;
+  velocity_from_integrals_.noalias() = space.delassus * force_from_modes_;
 
   // Modal coordinates of z = K^{1/2} s_R and of its rate (z and ż held in calc_state's scratch for the moment).
   position_.resize(r);
@@ -189,6 +192,98 @@ void LinearPhaseStepper::calc_kinematics(double t, OdeState& y, Kinematics& kine
   // barely reached yet (the far end of a chain) have velocities of that order, and the modal sum's round-off then
   // decides their first events differently from the integrator.
   dynamics_->relativeVelocity(y.data(), kinematics.velocity);
+}
+
+std::pair<double, double> LinearPhaseStepper::affineGuard(const AffineGuard& guard) const
+{
+  std::pair<double, double> quantity;
+  switch (guard.quantity)
+  {
+    case AffineGuard::Quantity::Velocity:
+      quantity = velocityAt(guard.row);
+      break;
+    case AffineGuard::Quantity::Spring:
+      quantity = springAt(guard.row);
+      break;
+    case AffineGuard::Quantity::Force:
+      quantity = forceAt(guard.row);
+      break;
+  }
+  return {guard.sign * quantity.first + guard.offset, guard.sign * quantity.second};
+}
+
+double LinearPhaseStepper::affineGuardCurvature(const AffineGuard& guard) const
+{
+  // Mode j: p = a cos ωτ + (b/ω) sin ωτ, so |ṗ| ≤ |b| + ω|a| and |p̈| = ω²|p| ≤ ω(|b| + ω|a|). The velocity's
+  // second derivative is W F(ṗ), the spring's and the force's are linear in p̈.
+  double bound = 0.0;
+  const auto moving = std::find(moving_rows_.begin(), moving_rows_.end(), guard.row);
+  for (Eigen::Index j = 0; j < omega_.size(); ++j)
+  {
+    const double rate_bound = std::abs(modal_velocity_(j)) + omega_(j) * std::abs(modal_position_(j));
+    const double acceleration_bound = omega_(j) * rate_bound;
+    switch (guard.quantity)
+    {
+      case AffineGuard::Quantity::Velocity:
+        bound += std::abs(velocity_from_integrals_(guard.row, j)) * rate_bound;
+        break;
+      case AffineGuard::Quantity::Spring:
+        if (moving != moving_rows_.end())
+          bound += std::abs(spring_from_modes_(moving - moving_rows_.begin(), j)) * acceleration_bound;
+        break;
+      case AffineGuard::Quantity::Force:
+        bound += std::abs(force_from_modes_(guard.row, j)) * acceleration_bound;
+        break;
+    }
+  }
+  return bound;
+}
+
+std::pair<double, double> LinearPhaseStepper::velocityAt(int row) const
+{
+  // From the impulses, as the integrator has it: w = w0 + W I, ẇ = W F (see calc_kinematics).
+  double velocity = space_->w0(row), rate = 0.0;
+  for (Eigen::Index k = 0; k < space_->size; ++k)
+  {
+    const double coupling = space_->delassus(row, k);
+    if (coupling == 0.0)
+      continue;
+    double impulse = base_state_[static_cast<std::size_t>(k)], force = 0.0;
+    for (Eigen::Index j = 0; j < omega_.size(); ++j)
+    {
+      impulse += force_from_modes_(k, j) * integral_(j);
+      force += force_from_modes_(k, j) * position_(j);
+    }
+    velocity += coupling * impulse;
+    rate += coupling * force;
+  }
+  return {velocity, rate};
+}
+
+std::pair<double, double> LinearPhaseStepper::springAt(int row) const
+{
+  double spring = base_state_[static_cast<std::size_t>(space_->size + row)], rate = 0.0;
+  const auto moving = std::find(moving_rows_.begin(), moving_rows_.end(), row);
+  if (moving == moving_rows_.end())
+    return {spring, rate};
+  const auto a = static_cast<Eigen::Index>(moving - moving_rows_.begin());
+  for (Eigen::Index j = 0; j < omega_.size(); ++j)
+  {
+    spring += spring_from_modes_(a, j) * position_(j);
+    rate += spring_from_modes_(a, j) * modalRate(j);
+  }
+  return {spring, rate};
+}
+
+std::pair<double, double> LinearPhaseStepper::forceAt(int row) const
+{
+  double force = 0.0, rate = 0.0;
+  for (Eigen::Index j = 0; j < omega_.size(); ++j)
+  {
+    force += force_from_modes_(row, j) * position_(j);
+    rate += force_from_modes_(row, j) * modalRate(j);
+  }
+  return {force, rate};
 }
 
 void LinearPhaseStepper::addModes(OdeState& y, double* force) const

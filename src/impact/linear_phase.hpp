@@ -45,6 +45,16 @@ public:
   }
 
   void calc_state(double t, OdeState& y) const;
+  /// Moves the modes to t, for affineGuard (calc_state and calc_kinematics move them too).
+  void moveTo(double t) const { evaluateModes(t); }
+  /// Value and time rate of an affine guard where the modes were last moved: a few products of the modes, far
+  /// cheaper than the state and its kinematics, with the rate for the root finding.
+  std::pair<double, double> affineGuard(const AffineGuard& guard) const;
+  /// Bound on the affine guard's second time derivative over the whole state (from the modes' amplitudes): with
+  /// its values and rates at both ends it proves an interval free of crossings (see ImpactSolver::advanceAffine).
+  double affineGuardCurvature(const AffineGuard& guard) const;
+  /// Length of a step (a fixed fraction of the fastest period).
+  double step() const { return step_; }
   /// The state at t with its kinematics, the forces read off the modes: what calc_state followed by
   /// evaluateKinematics gives, without the force law (guards are sampled, and their roots found, with it).
   void calc_kinematics(double t, OdeState& y, Kinematics& kinematics) const;
@@ -58,10 +68,17 @@ private:
                               const ContactDynamics& dynamics, const OdeState& y0, bool& any_sliding) const;
   /// Modal positions p and their time integrals ∫p at t, into position_ and integral_.
   void evaluateModes(double t) const;
+  /// Rate of mode j at the instant of the modes: ṗ = ṗ0 − ω²∫p.
+  double modalRate(Eigen::Index j) const { return modal_velocity_(j) - omega_(j) * omega_(j) * integral_(j); }
+  /// Value and rate of the relative velocity, the spring and the force of a row, from the modes.
+  std::pair<double, double> velocityAt(int row) const;
+  std::pair<double, double> springAt(int row) const;
+  std::pair<double, double> forceAt(int row) const;
   /// Adds the modes' part (in position_ and integral_) to a state that holds base_state_, and to the forces.
   void addModes(OdeState& y, double* force) const;
 
   const ContactDynamics* dynamics_ = nullptr;  ///< of the state built (the solver keeps it alive)
+  const ContactSpace* space_ = nullptr;
   OdeState base_state_;  ///< the state at t0 with the moving springs at zero: what the modes add to
   double t0_ = 0.0;
   double t_ = 0.0;
@@ -71,9 +88,10 @@ private:
   Eigen::VectorXd omega_;           ///< modal angular frequencies
   Eigen::VectorXd modal_position_;  ///< modal coordinates at t0
   Eigen::VectorXd modal_velocity_;
-  Eigen::MatrixXd spring_from_modes_;  ///< s_R = K^{-1/2} Q p
-  Eigen::MatrixXd force_from_modes_;   ///< F = G K^{-1/2} Q p, so I − I0 = G K^{-1/2} Q ∫p
-  Eigen::VectorXd start_velocity_;     ///< w at t0
+  Eigen::MatrixXd spring_from_modes_;        ///< s_R = K^{-1/2} Q p
+  Eigen::MatrixXd force_from_modes_;         ///< F = G K^{-1/2} Q p, so I − I0 = G K^{-1/2} Q ∫p
+  Eigen::MatrixXd velocity_from_integrals_;  ///< W G K^{-1/2} Q, so w − w0 = W G K^{-1/2} Q ∫p
+  Eigen::VectorXd start_velocity_;           ///< w at t0
 
   // Scratch of build, kept for its storage.
   Eigen::MatrixXd force_from_s_;      ///< G

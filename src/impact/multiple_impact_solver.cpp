@@ -40,10 +40,42 @@ constexpr double DIRECTION_AGREEMENT = 1e-6;
 /// Zero-time transitions one contact may make at one instant (see ImpactSolver::settle).
 constexpr int MAX_SWITCHES_PER_INSTANT = 6;
 
+/// Evaluations allowed to bracket one guard's zero (both methods converge in about ten).
+constexpr int MAX_ROOT_ITERATIONS = 100;
+
+/// Halvings of a closed-form step allowed to decide whether an affine guard crosses zero in it: where the bound
+/// still cannot exclude a crossing at 1/16 of a step, the guard only grazes zero (the sampled search would miss it
+/// too, at a quarter step).
+constexpr int MAX_CROSSING_REFINEMENTS = 4;
+
+/// Relative round-off of an affine guard's modal sum: values below it (times the size of the guard's modal terms
+/// over a step) are zero.
+constexpr double NOISE = 1e-12;
+
+/// Crossings this close (as a fraction of the step) fire together, at the earliest.
+constexpr double SIMULTANEOUS = 1e-12;
+
+/// Guard values (dimensionless) within round-off of zero at the start of a closed-form state.
+constexpr double START_ROUND_OFF = 1e-12;
+
 struct FiredGuard
 {
   Guard guard;
   double time;
+};
+
+/// An affine guard's value and time rate at one instant.
+struct GuardSample
+{
+  double value;
+  double rate;
+};
+
+/// An interval at whose ends a guard is ≤ 0 and > 0.
+struct Bracket
+{
+  double a, b;
+  double ga, gb;
 };
 
 /// Integrates the spring dynamics from event to event and runs the state transition diagram.
@@ -280,7 +312,7 @@ private:
   Expected<bool> advanceToNextEvent()
   {
     if (options_.closed_form_linear_phases && tryClosedForm())
-      return advanceWith(closed_form_);
+      return advanceAffine();
     followShortSlips();
     omega_ = fastestFrequency();
     // 0.1 rad of the fastest mode, near the steps the tolerance allows: Bulirsch–Stoer grows a step at most fourfold
@@ -300,18 +332,166 @@ private:
     return advanceWith(*plain_stepper_);
   }
 
+  /// The guards of the current state, with their affine forms.
+  const std::vector<Guard>& armGuards()
+  {
+    const std::vector<Guard>& guards = armedGuards(contacts_, space_, guards_);
+    affine_guards_.clear();
+    for (const Guard& guard : guards)
+      affine_guards_.push_back(affineForm(guard, space_));
+    return guards;
+  }
+
+  /// A closed-form state whose guards are all affine (every frictionless state, rigid links included) is searched
+  /// with bounds instead of samples: each guard's second derivative is bounded over the state, so its values and
+  /// rates at the ends of an interval prove the interval free of crossings, or the interval is halved (down to a
+  /// sixteenth of a step). It sees crossing pairs the samples could step over, with fewer evaluations. Otherwise (a
+  /// guard not affine, one above zero at the start, or the impulse curve recorded) the sampled search.
+  Expected<bool> advanceAffine()
+  {
+    const LinearPhaseStepper& stepper = closed_form_;
+    const std::vector<Guard>& guards = armGuards();
+    const bool all_affine = std::all_of(affine_guards_.begin(), affine_guards_.end(),
+                                        [](const std::optional<AffineGuard>& form) { return form.has_value(); });
+    if (!all_affine || options_.record_samples)
+      return advanceWith(closed_form_);
+    double a = t_;
+    sampleAffine(a, start_samples_);
+    for (GuardSample& sample : start_samples_)
+    {
+      // The contact that has just switched starts its new guard at zero, falling, but the state it switched at was
+      // found with the old state's modes and is re-read by the new one's: up to round-off on either side of zero.
+      if (sample.value > 0.0 && sample.value <= START_ROUND_OFF && sample.rate < 0.0)
+        sample.value = 0.0;
+      if (sample.value > 0.0)
+        return advanceWith(closed_form_);  // it must fall to zero before it can rise through it
+    }
+    curvature_.clear();
+    for (const std::optional<AffineGuard>& form : affine_guards_)
+      curvature_.push_back(stepper.affineGuardCurvature(*form));
+    while (true)
+    {
+      if (++step_count_ > options_.max_steps)
+        return stepLimitError();
+      const double b = a + stepper.step();
+      sampleAffine(b, end_samples_);
+      crossings_.clear();
+      const double simultaneous = SIMULTANEOUS * (b - a);
+      double earliest = b;
+      for (std::size_t g = 0; g < guards.size(); ++g)
+      {
+        std::optional<Bracket> bracket = firstCrossing(g, a, start_samples_[g], b, end_samples_[g], 0);
+        if (!bracket || !boundBefore(g, earliest + simultaneous, *bracket))
+          continue;
+        const double zero = risingZero(g, *bracket);
+        crossings_.push_back({guards[g], zero});
+        earliest = std::min(earliest, zero);
+      }
+      if (crossings_.empty())
+      {
+        a = b;
+        std::swap(start_samples_, end_samples_);
+        continue;
+      }
+      return fireEarliest(stepper, b - a);
+    }
+  }
+
+  /// Narrows the bracket of guard g to end by `limit`, the earliest zero found so far (a later zero cannot fire):
+  /// false when the guard is still ≤ 0 there. One evaluation instead of locating a zero that does not matter.
+  bool boundBefore(std::size_t g, double limit, Bracket& bracket) const
+  {
+    if (limit >= bracket.b)
+      return true;
+    if (limit <= bracket.a)
+      return false;
+    closed_form_.moveTo(limit);
+    const double value = closed_form_.affineGuard(*affine_guards_[g]).first;
+    if (value <= 0.0)
+      return false;
+    bracket.b = limit;
+    bracket.gb = value;
+    return true;
+  }
+
+  /// Every affine guard's value and rate at t.
+  void sampleAffine(double t, std::vector<GuardSample>& samples) const
+  {
+    closed_form_.moveTo(t);
+    samples.clear();
+    for (const std::optional<AffineGuard>& form : affine_guards_)
+    {
+      const auto [value, rate] = closed_form_.affineGuard(*form);
+      samples.push_back({value, rate});
+    }
+  }
+
+  /// The first interval of [a, b] in which affine guard g rises through zero, found by halving [a, b] where the
+  /// guard's curvature bound cannot exclude it. Taylor's bound from each end covers half the interval:
+  /// g(a + u) ≤ g(a) + ġ(a)u + Mu²/2, largest at an end of the half since it is convex.
+  std::optional<Bracket> firstCrossing(std::size_t g, double a, GuardSample ga, double b, GuardSample gb,
+                                       int depth) const
+  {
+    // Values within round-off of the guard's modal terms count as zero: a contact not reached yet (the far end of
+    // a chain) has a velocity that is a sum of cancelling modes, and its sign is noise. From zero, only a guard
+    // that rises leaves at once; one that falls crosses later, if at all.
+    const double half = 0.5 * (b - a);
+    const double noise = NOISE * curvature_[g] * half * half;
+    const double va = std::abs(ga.value) <= noise ? 0.0 : ga.value;
+    const double vb = std::abs(gb.value) <= noise ? 0.0 : gb.value;
+    const bool below = va < 0.0 || (va == 0.0 && ga.rate * half > noise);
+    if (below && vb > 0.0)
+      return Bracket{a, b, ga.value, gb.value};
+    const double curvature_term = 0.5 * curvature_[g] * half * half;
+    const bool left_clear = std::max(va, ga.value + ga.rate * half + curvature_term) <= noise;
+    const bool right_clear = std::max(vb, gb.value - gb.rate * half + curvature_term) <= noise;
+    if ((left_clear && right_clear) || depth == MAX_CROSSING_REFINEMENTS)
+      return std::nullopt;
+    const double middle = a + half;
+    closed_form_.moveTo(middle);
+    const auto [value, rate] = closed_form_.affineGuard(*affine_guards_[g]);
+    const GuardSample gm{value, rate};
+    if (std::optional<Bracket> left = firstCrossing(g, a, ga, middle, gm, depth + 1))
+      return left;
+    return firstCrossing(g, middle, gm, b, gb, depth + 1);
+  }
+
+  /// Moves to the earliest of crossings_ and fires it with every other within round-off of it (of a step `width`).
+  template <class Stepper>
+  Expected<bool> fireEarliest(const Stepper& stepper, double width)
+  {
+    double first = crossings_.front().time;
+    for (const FiredGuard& c : crossings_)
+      first = std::min(first, c.time);
+    fired_.clear();
+    for (const FiredGuard& c : crossings_)
+      if (c.time <= first + SIMULTANEOUS * width)
+        fired_.push_back({c.guard, first});
+    stepper.calc_state(first, y_);
+    t_ = physicalTime(stepper, first);
+    for (const FiredGuard& f : fired_)
+      if (auto status = fire(f.guard); !status)
+        return status.error();
+    return true;
+  }
+
+  Error stepLimitError() const
+  {
+    return Error{ErrorCode::StepLimitExceeded, "",
+                 "the impact did not end within " + std::to_string(options_.max_steps) + " integrator steps"};
+  }
+
   template <class Stepper>
   Expected<bool> advanceWith(Stepper& stepper)
   {
-    const std::vector<Guard>& guards = armedGuards(contacts_, space_, guards_);
+    const std::vector<Guard>& guards = armGuards();
     guard_values_.resize(SAMPLES_PER_STEP + 1, static_cast<Eigen::Index>(guards.size()));
     samples_ = SAMPLES_PER_STEP;
     bool first_row_known = sampleStart(stepper, guards);  // later, a step's first sample is the previous step's last
     while (true)
     {
       if (++step_count_ > options_.max_steps)
-        return Error{ErrorCode::StepLimitExceeded, "",
-                     "the impact did not end within " + std::to_string(options_.max_steps) + " integrator steps"};
+        return stepLimitError();
       const auto [t0, t1] = stepper.do_step(std::cref(dynamics_));
       samples_ = guardSamples(stepper, t0, t1);
       guard_values_.conservativeResize(samples_ + 1, Eigen::NoChange);
@@ -380,10 +560,10 @@ private:
   }
 
   template <class Stepper>
-  double guardAt(const Stepper& stepper, const Guard& guard, double t) const
+  double guardAt(const Stepper& stepper, std::size_t g, double t) const
   {
     evaluateAt(stepper, t);
-    return guardValue(guard, kinematics_buffer_, contacts_, dynamics_, space_);
+    return guardValue(guards_[g], kinematics_buffer_, contacts_, dynamics_, space_);
   }
 
   /// Values of every guard at evenly spaced instants of the step into guard_values_ (one state evaluation per
@@ -442,7 +622,7 @@ private:
         if (ga <= 0.0 && gb > 0.0)
         {
           const double a = sampleTime(t0, t1, k), b = sampleTime(t0, t1, k + 1);
-          crossings.push_back({guards[g], locateRoot(stepper, guards[g], a, b, ga, gb)});
+          crossings.push_back({guards[g], locateRoot(stepper, g, a, b, ga, gb)});
           break;
         }
       }
@@ -452,26 +632,56 @@ private:
     double first = crossings.front().time;
     for (const FiredGuard& c : crossings)
       first = std::min(first, c.time);
-    const double simultaneous = 1e-12 * (t1 - t0);
+    const double simultaneous = SIMULTANEOUS * (t1 - t0);
     for (const FiredGuard& c : crossings)
       if (c.time <= first + simultaneous)
         fired_.push_back({c.guard, first});
     return fired_;
   }
 
+  /// Width to which a guard's zero is bracketed, in a sample interval of `width` starting at `start`.
+  static double rootTolerance(double width, double start)
+  {
+    return 1e-15 * width + 4.0 * std::numeric_limits<double>::epsilon() * std::abs(start);
+  }
+
   /// The instant just after the guard's zero (so that the transition has numerically happened).
   template <class Stepper>
-  double locateRoot(const Stepper& stepper, const Guard& guard, double a, double b, double ga, double gb) const
+  double locateRoot(const Stepper& stepper, std::size_t g, double a, double b, double ga, double gb) const
   {
     if (ga == 0.0)
       return a;
     const double width = b - a;
-    auto close_enough = [width](double lo, double hi)
-    { return hi - lo <= 1e-15 * width + 4.0 * std::numeric_limits<double>::epsilon() * std::abs(lo); };
-    std::uintmax_t iterations = 100;
-    const auto bracket = boost::math::tools::toms748_solve([&](double t) { return guardAt(stepper, guard, t); }, a, b,
-                                                           ga, gb, close_enough, iterations);
+    auto close_enough = [width](double lo, double hi) { return hi - lo <= rootTolerance(width, lo); };
+    std::uintmax_t iterations = MAX_ROOT_ITERATIONS;
+    const auto bracket = boost::math::tools::toms748_solve([&](double t) { return guardAt(stepper, g, t); }, a, b, ga,
+                                                           gb, close_enough, iterations);
     return bracket.second;
+  }
+
+  /// The instant just after affine guard g's zero in the bracket, by Newton's method kept inside it (bisecting where
+  /// it would leave it): the closed form gives the guard's rate with its value, and this takes about half the
+  /// evaluations of TOMS 748.
+  double risingZero(std::size_t g, Bracket bracket) const
+  {
+    auto& [a, b, ga, gb] = bracket;
+    if (ga >= 0.0)
+      return a;  // rising from zero (to round-off) at a
+    const double tolerance = rootTolerance(b - a, a);
+    double t = a - ga * (b - a) / (gb - ga);
+    for (int i = 0; i < MAX_ROOT_ITERATIONS && b - a > tolerance; ++i)
+    {
+      closed_form_.moveTo(t);
+      const auto [value, rate] = closed_form_.affineGuard(*affine_guards_[g]);
+      (value > 0.0 ? b : a) = t;
+      // Once converged the zero lies well within the tolerance of t + step: a point just past it, on the other
+      // side from t, closes the bracket.
+      const double step = -value / rate;
+      const double past = std::abs(step) <= 0.25 * tolerance ? (value > 0.0 ? -0.25 : 0.25) * tolerance : 0.0;
+      const double next = t + step + past;
+      t = next > a && next < b ? next : 0.5 * (a + b);
+    }
+    return b;
   }
 
   Expected<ImpactResult> finish()
@@ -510,6 +720,9 @@ private:
   mutable Eigen::VectorXd momentum_;        ///< scratch of kineticEnergy
   // Storage kept across the solve (a short impact is a few states; allocating per event cost a third of it).
   std::vector<Guard> guards_;
+  std::vector<std::optional<AffineGuard>> affine_guards_;         ///< of guards_
+  std::vector<double> curvature_;                                 ///< bounds on the affine guards' second derivatives
+  mutable std::vector<GuardSample> start_samples_, end_samples_;  ///< of the affine guards at a step's ends
   std::vector<FiredGuard> crossings_, fired_;
   std::vector<int> switches_;
   std::vector<bool> settled_;

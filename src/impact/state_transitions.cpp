@@ -139,6 +139,23 @@ TransitionEvents activate(std::size_t index, const Kinematics& kinematics, doubl
 }
 }  // namespace
 
+namespace
+{
+double quantityAt(const AffineGuard& guard, const Kinematics& kinematics, const ContactSpace& space)
+{
+  switch (guard.quantity)
+  {
+    case AffineGuard::Quantity::Velocity:
+      return kinematics.velocity(guard.row);
+    case AffineGuard::Quantity::Spring:
+      return kinematics.y[space.size + guard.row];
+    case AffineGuard::Quantity::Force:
+      return kinematics.force(guard.row);
+  }
+  return 0.0;
+}
+}  // namespace
+
 void evaluateKinematics(const ContactDynamics& dynamics, const double* y, Kinematics& kinematics)
 {
   kinematics.y = y;
@@ -176,38 +193,48 @@ const std::vector<Guard>& armedGuards(const std::vector<ContactState>& contacts,
   return guards;
 }
 
-double guardValue(const Guard& guard, const Kinematics& kinematics, const std::vector<ContactState>& contacts,
-                  const ContactDynamics& dynamics, const ContactSpace& space)
+std::optional<AffineGuard> affineForm(const Guard& guard, const ContactSpace& space)
 {
+  using Quantity = AffineGuard::Quantity;
   const int row = space.offset[guard.contact];
-  const double* s = kinematics.y + space.size + row;
-  const ContactState& contact = contacts[guard.contact];
   if (guard.releases_direction)
-    return contact.coneLength(kinematics.force(row)) - QUASI_STEADY_CONE_LENGTH;
+    return std::nullopt;
   switch (guard.type)
   {
     case ContactEventType::EndOfCompression:
-      return kinematics.velocity(row);
+      return AffineGuard{Quantity::Velocity, row, 1.0, 0.0};
     case ContactEventType::RestartOfCompression:
-      return -kinematics.velocity(row);
+      return AffineGuard{Quantity::Velocity, row, -1.0, 0.0};
     case ContactEventType::Reactivation:
       // Approaching by more than round-off: a released rigid link left touching at v_n = 0 with a force of 1e-18
       // would otherwise cross zero again at the same instant and link and release for ever (random chains).
-      return -kinematics.velocity(row) - VELOCITY_TOLERANCE;
+      return AffineGuard{Quantity::Velocity, row, -1.0, -VELOCITY_TOLERANCE};
     case ContactEventType::Separation:
-      return s[0];
+      return AffineGuard{Quantity::Spring, row, 1.0, 0.0};
     case ContactEventType::LinkRelease:
-      return -kinematics.force(row);
+      return AffineGuard{Quantity::Force, row, -1.0, 0.0};
     case ContactEventType::StickToSlip:
-      // |F_t| − μ F_n, i.e. E_t − μ²η²E_n in force form (spec §2.5).
-      return std::hypot(kinematics.force(row + 1), kinematics.force(row + 2)) -
-             contact.friction * kinematics.force(row);
     case ContactEventType::SlipToStick:
-      return -dynamics.slidingSpeed(guard.contact, kinematics.y, kinematics.velocity, kinematics.force);
     case ContactEventType::RigidLink:
       break;
   }
-  return -1.0;
+  return std::nullopt;
+}
+
+double guardValue(const Guard& guard, const Kinematics& kinematics, const std::vector<ContactState>& contacts,
+                  const ContactDynamics& dynamics, const ContactSpace& space)
+{
+  if (const std::optional<AffineGuard> affine = affineForm(guard, space))
+    return affine->sign * quantityAt(*affine, kinematics, space) + affine->offset;
+  const int row = space.offset[guard.contact];
+  const ContactState& contact = contacts[guard.contact];
+  if (guard.releases_direction)
+    return contact.coneLength(kinematics.force(row)) - QUASI_STEADY_CONE_LENGTH;
+  if (guard.type == ContactEventType::StickToSlip)  // |F_t| − μ F_n, i.e. E_t − μ²η²E_n in force form (spec §2.5)
+    return std::hypot(kinematics.force(row + 1), kinematics.force(row + 2)) - contact.friction * kinematics.force(row);
+  if (guard.type == ContactEventType::SlipToStick)
+    return -dynamics.slidingSpeed(guard.contact, kinematics.y, kinematics.velocity, kinematics.force);
+  return -1.0;  // a rigid link is made by an end of compression, never by a guard of its own
 }
 
 TransitionEvents applyTransition(const Guard& guard, const Kinematics& kinematics, double* y,

@@ -25,6 +25,26 @@ struct Guard
   bool releases_direction = false;
 };
 
+/// A guard that is one kinematic quantity of one contact-space row, signed and offset: g = sign · q(row) + offset.
+/// Every guard of the normal phases is one. Where the dynamics is linear, such a guard is a sum of sines whose value
+/// and rate the closed form gives from its modes alone, without the state or the force law.
+struct AffineGuard
+{
+  enum class Quantity
+  {
+    Velocity,  ///< relative contact velocity w
+    Spring,    ///< spring deformation s
+    Force,     ///< contact force F
+  };
+  Quantity quantity;
+  int row;
+  double sign;
+  double offset;
+};
+
+/// The guard's affine form, if it has one (the tangential and direction guards do not).
+std::optional<AffineGuard> affineForm(const Guard& guard, const ContactSpace& space);
+
 /// Cone spring length (dimensionless) up to which a contact that started sliding from a relaxed spring keeps its
 /// quasi-steady slip direction. The lag's first-order formula leaves errors of order ρ³ in its friction.
 constexpr double QUASI_STEADY_CONE_LENGTH = 1e-4;

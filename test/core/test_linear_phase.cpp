@@ -108,3 +108,20 @@ TEST(LinearPhase, TurningSlidingDirectionsAreLeftToTheIntegrator)
   cushion.velocity.z() = -0.3;
   expectSameSolution(cushion, "cushion hit in flight");
 }
+
+TEST(LinearPhase, ContactsNotReachedYetDoNotSwitchOnRoundOff)
+{
+  // The last five balls touch at rest: their contacts start in compression at v_n = 0, and until the collision reaches
+  // them their velocities are sums of cancelling modes, zero to round-off. The closed form's crossing search once
+  // read that round-off as a rise through zero: an end and a restart of compression at the far end at the first
+  // event, and final velocities off by 0.009. (A random chain: its round-off pattern needs every digit.)
+  bsp::BallChain chain;
+  chain.masses = {0.83592576009963371, 1.8794591996081538, 1.8460783761356143, 1.4442949620754957,
+                  0.71553130595111081, 0.2362291842441776, 2.1218315093086231};
+  chain.velocities = {1, -0.39844230897340244, 0, 0, 0, 0, 0};
+  chain.stiffness = {1.1600730969875874, 3.0936528516323571, 0.22781271395227692,
+                     1.3370482682604774, 1.2811614048175659, 1.1350394897597016};
+  chain.restitution = {0.60116950166841565, 0.7859328589737189,  0.58782837365867158,
+                       0.72476840053096581, 0.96118825765025384, 0.90983651187093173};
+  expectSameSolution(chain, "chain touching at rest");
+}
