@@ -3,9 +3,12 @@
 #include "dense_stepper.hpp"  // first: its Boost 1.74 workaround must come before any Boost.Math header
 
 #include <algorithm>
+#include <array>
+#include <boost/container/small_vector.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <optional>
 
 #include "contact_dynamics.hpp"
@@ -48,8 +51,8 @@ constexpr int MAX_ROOT_ITERATIONS = 100;
 /// too, at a quarter step).
 constexpr int MAX_CROSSING_REFINEMENTS = 4;
 
-/// Relative round-off of an affine guard's modal sum: values below it (times the size of the guard's modal terms
-/// over a step) are zero.
+/// Relative round-off of an affine guard's modal sum: values below it times the size of the guard's modal terms
+/// over a step (its curvature bound times the step squared) are zero.
 constexpr double NOISE = 1e-12;
 
 /// Crossings this close (as a fraction of the step) fire together, at the earliest.
@@ -63,6 +66,11 @@ struct FiredGuard
   Guard guard;
   double time;
 };
+
+/// Storage of the affine search, one entry per guard: inline for the guards of a few contacts, so that a short
+/// frictionless collision does not allocate for it.
+template <class T>
+using PerGuard = boost::container::small_vector<T, 8>;
 
 /// An affine guard's value and time rate at one instant.
 struct GuardSample
@@ -367,23 +375,30 @@ private:
         return advanceWith(closed_form_);  // it must fall to zero before it can rise through it
     }
     curvature_.clear();
+    noise_.clear();
     for (const std::optional<AffineGuard>& form : affine_guards_)
+    {
       curvature_.push_back(stepper.affineGuardCurvature(*form));
+      noise_.push_back(NOISE * curvature_.back() * stepper.step() * stepper.step());
+    }
     while (true)
     {
       if (++step_count_ > options_.max_steps)
         return stepLimitError();
       const double b = a + stepper.step();
       sampleAffine(b, end_samples_);
+      brackets_.clear();
+      pending_[0].resize(guards.size());
+      std::iota(pending_[0].begin(), pending_[0].end(), std::size_t{0});
+      isolateCrossings(a, start_samples_, b, end_samples_, 0);
       crossings_.clear();
       const double simultaneous = SIMULTANEOUS * (b - a);
       double earliest = b;
-      for (std::size_t g = 0; g < guards.size(); ++g)
+      for (auto& [g, bracket] : brackets_)
       {
-        std::optional<Bracket> bracket = firstCrossing(g, a, start_samples_[g], b, end_samples_[g], 0);
-        if (!bracket || !boundBefore(g, earliest + simultaneous, *bracket))
+        if (!boundBefore(g, earliest + simultaneous, bracket))
           continue;
-        const double zero = risingZero(g, *bracket);
+        const double zero = risingZero(g, bracket);
         crossings_.push_back({guards[g], zero});
         earliest = std::min(earliest, zero);
       }
@@ -415,7 +430,7 @@ private:
   }
 
   /// Every affine guard's value and rate at t.
-  void sampleAffine(double t, std::vector<GuardSample>& samples) const
+  void sampleAffine(double t, PerGuard<GuardSample>& samples) const
   {
     closed_form_.moveTo(t);
     samples.clear();
@@ -426,34 +441,73 @@ private:
     }
   }
 
-  /// The first interval of [a, b] in which affine guard g rises through zero, found by halving [a, b] where the
-  /// guard's curvature bound cannot exclude it. Taylor's bound from each end covers half the interval:
-  /// g(a + u) ≤ g(a) + ġ(a)u + Mu²/2, largest at an end of the half since it is convex.
-  std::optional<Bracket> firstCrossing(std::size_t g, double a, GuardSample ga, double b, GuardSample gb,
-                                       int depth) const
+  /// What the samples at the ends of an interval tell of one affine guard.
+  enum class Crossing
   {
-    // Values within round-off of the guard's modal terms count as zero: a contact not reached yet (the far end of
-    // a chain) has a velocity that is a sum of cancelling modes, and its sign is noise. From zero, only a guard
-    // that rises leaves at once; one that falls crosses later, if at all.
+    Bracketed,  ///< ≤ 0 at the start and > 0 at the end
+    Excluded,   ///< proven ≤ 0 throughout
+    Undecided,
+  };
+
+  /// Taylor's bound from each end covers half the interval: g(a + u) ≤ g(a) + ġ(a)u + Mu²/2, largest at an end of
+  /// the half since it is convex. Values within round-off of the guard's modal terms count as zero: a contact not
+  /// reached yet (the far end of a chain) has a velocity that is a sum of cancelling modes, and its sign is noise.
+  /// From zero, only a guard that rises leaves at once; one that falls crosses later, if at all; one that stays
+  /// there does not cross.
+  Crossing classify(std::size_t g, double a, GuardSample ga, double b, GuardSample gb) const
+  {
     const double half = 0.5 * (b - a);
-    const double noise = NOISE * curvature_[g] * half * half;
+    const double noise = noise_[g];
     const double va = std::abs(ga.value) <= noise ? 0.0 : ga.value;
     const double vb = std::abs(gb.value) <= noise ? 0.0 : gb.value;
     const bool below = va < 0.0 || (va == 0.0 && ga.rate * half > noise);
     if (below && vb > 0.0)
-      return Bracket{a, b, ga.value, gb.value};
+      return Crossing::Bracketed;
+    if (va == 0.0 && vb == 0.0 && std::max(std::abs(ga.rate), std::abs(gb.rate)) * half <= noise)
+      return Crossing::Excluded;
     const double curvature_term = 0.5 * curvature_[g] * half * half;
     const bool left_clear = std::max(va, ga.value + ga.rate * half + curvature_term) <= noise;
     const bool right_clear = std::max(vb, gb.value - gb.rate * half + curvature_term) <= noise;
-    if ((left_clear && right_clear) || depth == MAX_CROSSING_REFINEMENTS)
-      return std::nullopt;
-    const double middle = a + half;
+    return left_clear && right_clear ? Crossing::Excluded : Crossing::Undecided;
+  }
+
+  /// The first brackets of the guards in pending_[depth] within [a, b] into brackets_, the interval halved for all
+  /// undecided guards at once (one evaluation of the modes serves them all). The right half is searched only when
+  /// the left one holds no bracket: its zeros come later. Returns whether a bracket was found.
+  bool isolateCrossings(double a, const PerGuard<GuardSample>& at_a, double b, const PerGuard<GuardSample>& at_b,
+                        int depth)
+  {
+    PerGuard<std::size_t>& undecided = pending_[depth + 1];
+    undecided.clear();
+    bool found = false;
+    for (std::size_t g : pending_[depth])
+      switch (classify(g, a, at_a[g], b, at_b[g]))
+      {
+        case Crossing::Bracketed:
+          brackets_.push_back({g, Bracket{a, b, at_a[g].value, at_b[g].value}});
+          found = true;
+          break;
+        case Crossing::Undecided:
+          if (depth < MAX_CROSSING_REFINEMENTS)
+            undecided.push_back(g);
+          break;
+        case Crossing::Excluded:
+          break;
+      }
+    if (undecided.empty())
+      return found;
+    const double middle = 0.5 * (a + b);
+    PerGuard<GuardSample>& at_middle = middle_samples_[depth];
+    at_middle.resize(at_a.size());
     closed_form_.moveTo(middle);
-    const auto [value, rate] = closed_form_.affineGuard(*affine_guards_[g]);
-    const GuardSample gm{value, rate};
-    if (std::optional<Bracket> left = firstCrossing(g, a, ga, middle, gm, depth + 1))
-      return left;
-    return firstCrossing(g, middle, gm, b, gb, depth + 1);
+    for (std::size_t g : undecided)
+    {
+      const auto [value, rate] = closed_form_.affineGuard(*affine_guards_[g]);
+      at_middle[g] = {value, rate};
+    }
+    if (isolateCrossings(a, at_a, middle, at_middle, depth + 1))
+      return true;
+    return isolateCrossings(middle, at_middle, b, at_b, depth + 1) || found;
   }
 
   /// Moves to the earliest of crossings_ and fires it with every other within round-off of it (of a step `width`).
@@ -720,9 +774,14 @@ private:
   mutable Eigen::VectorXd momentum_;        ///< scratch of kineticEnergy
   // Storage kept across the solve (a short impact is a few states; allocating per event cost a third of it).
   std::vector<Guard> guards_;
-  std::vector<std::optional<AffineGuard>> affine_guards_;         ///< of guards_
-  std::vector<double> curvature_;                                 ///< bounds on the affine guards' second derivatives
-  mutable std::vector<GuardSample> start_samples_, end_samples_;  ///< of the affine guards at a step's ends
+  PerGuard<std::optional<AffineGuard>> affine_guards_;  ///< of guards_
+  PerGuard<std::pair<std::size_t, Bracket>> brackets_;  ///< guards found crossing in a step, with their brackets
+  /// Guards still undecided at each depth of a step's halving, and their samples at each depth's middle.
+  std::array<PerGuard<std::size_t>, MAX_CROSSING_REFINEMENTS + 2> pending_;
+  std::array<PerGuard<GuardSample>, MAX_CROSSING_REFINEMENTS + 1> middle_samples_;
+  PerGuard<double> noise_;      ///< round-off of the affine guards' values (NOISE × their modal terms over a step)
+  PerGuard<double> curvature_;  ///< bounds on the affine guards' second derivatives
+  mutable PerGuard<GuardSample> start_samples_, end_samples_;  ///< of the affine guards at a step's ends
   std::vector<FiredGuard> crossings_, fired_;
   std::vector<int> switches_;
   std::vector<bool> settled_;
