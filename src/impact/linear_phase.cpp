@@ -150,7 +150,7 @@ bool LinearPhaseStepper::build(const ContactSpace& space, const std::vector<Cont
   omega_ = modes_.eigenvalues().cwiseMax(0.0).cwiseSqrt();
   spring_from_modes_.noalias() = sqrt_k_.cwiseInverse().asDiagonal() * modes_.eigenvectors();
   force_from_modes_.noalias() = force_from_s_ * spring_from_modes_;
-  velocity_from_integrals_.noalias() = space.delassus * force_from_modes_;
+  velocity_map_made_ = false;  // by the first affineGuardCurvature: only the affine search uses it
 
   // Modal coordinates of z = K^{1/2} s_R and of its rate (z and ż held in calc_state's scratch for the moment).
   position_.resize(r);
@@ -216,6 +216,9 @@ double LinearPhaseStepper::affineGuardCurvature(const AffineGuard& guard) const
 {
   // Mode j: p = a cos ωτ + (b/ω) sin ωτ, so |ṗ| ≤ |b| + ω|a| and |p̈| = ω²|p| ≤ ω(|b| + ω|a|). The velocity's
   // second derivative is W F(ṗ), the spring's and the force's are linear in p̈.
+  if (!velocity_map_made_)
+    velocity_from_integrals_.noalias() = space_->delassus * force_from_modes_;
+  velocity_map_made_ = true;
   double bound = 0.0;
   const auto moving = std::find(moving_rows_.begin(), moving_rows_.end(), guard.row);
   for (Eigen::Index j = 0; j < omega_.size(); ++j)

@@ -88,10 +88,11 @@ private:
   Eigen::VectorXd omega_;           ///< modal angular frequencies
   Eigen::VectorXd modal_position_;  ///< modal coordinates at t0
   Eigen::VectorXd modal_velocity_;
-  Eigen::MatrixXd spring_from_modes_;        ///< s_R = K^{-1/2} Q p
-  Eigen::MatrixXd force_from_modes_;         ///< F = G K^{-1/2} Q p, so I − I0 = G K^{-1/2} Q ∫p
-  Eigen::MatrixXd velocity_from_integrals_;  ///< W G K^{-1/2} Q, so w − w0 = W G K^{-1/2} Q ∫p
-  Eigen::VectorXd start_velocity_;           ///< w at t0
+  Eigen::MatrixXd spring_from_modes_;                ///< s_R = K^{-1/2} Q p
+  Eigen::MatrixXd force_from_modes_;                 ///< F = G K^{-1/2} Q p, so I − I0 = G K^{-1/2} Q ∫p
+  mutable Eigen::MatrixXd velocity_from_integrals_;  ///< W G K^{-1/2} Q (w − w0 = W G K^{-1/2} Q ∫p), made on demand
+  mutable bool velocity_map_made_ = false;
+  Eigen::VectorXd start_velocity_;                   ///< w at t0
 
   // Scratch of build, kept for its storage.
   Eigen::MatrixXd force_from_s_;      ///< G

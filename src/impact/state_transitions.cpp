@@ -193,7 +193,11 @@ const std::vector<Guard>& armedGuards(const std::vector<ContactState>& contacts,
   return guards;
 }
 
-std::optional<AffineGuard> affineForm(const Guard& guard, const ContactSpace& space)
+namespace
+{
+/// Internal linkage, so that guardValue, run at every guard sample, inlines it (a shared library's exported
+/// functions are not inlined into their own callers).
+std::optional<AffineGuard> affineFormOf(const Guard& guard, const ContactSpace& space)
 {
   using Quantity = AffineGuard::Quantity;
   const int row = space.offset[guard.contact];
@@ -220,11 +224,17 @@ std::optional<AffineGuard> affineForm(const Guard& guard, const ContactSpace& sp
   }
   return std::nullopt;
 }
+}  // namespace
+
+std::optional<AffineGuard> affineForm(const Guard& guard, const ContactSpace& space)
+{
+  return affineFormOf(guard, space);
+}
 
 double guardValue(const Guard& guard, const Kinematics& kinematics, const std::vector<ContactState>& contacts,
                   const ContactDynamics& dynamics, const ContactSpace& space)
 {
-  if (const std::optional<AffineGuard> affine = affineForm(guard, space))
+  if (const std::optional<AffineGuard> affine = affineFormOf(guard, space))
     return affine->sign * quantityAt(*affine, kinematics, space) + affine->offset;
   const int row = space.offset[guard.contact];
   const ContactState& contact = contacts[guard.contact];
