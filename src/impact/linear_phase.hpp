@@ -92,7 +92,7 @@ private:
   Eigen::MatrixXd force_from_modes_;                 ///< F = G K^{-1/2} Q p, so I − I0 = G K^{-1/2} Q ∫p
   mutable Eigen::MatrixXd velocity_from_integrals_;  ///< W G K^{-1/2} Q (w − w0 = W G K^{-1/2} Q ∫p), made on demand
   mutable bool velocity_map_made_ = false;
-  Eigen::VectorXd start_velocity_;                   ///< w at t0
+  Eigen::VectorXd start_velocity_;  ///< w at t0
 
   // Scratch of build, kept for its storage.
   Eigen::MatrixXd force_from_s_;      ///< G

@@ -3,14 +3,12 @@
 #include "dense_stepper.hpp"  // first: its Boost 1.74 workaround must come before any Boost.Math header
 
 #include <algorithm>
-#include <array>
-#include <boost/container/small_vector.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <optional>
 
+#include "affine_crossing_search.hpp"
 #include "contact_dynamics.hpp"
 #include "contact_space.hpp"
 #include "linear_phase.hpp"
@@ -43,47 +41,13 @@ constexpr double DIRECTION_AGREEMENT = 1e-6;
 /// Zero-time transitions one contact may make at one instant (see ImpactSolver::settle).
 constexpr int MAX_SWITCHES_PER_INSTANT = 6;
 
-/// Evaluations allowed to bracket one guard's zero (both methods converge in about ten).
+/// Evaluations allowed to TOMS 748 for one guard's zero (it converges in about ten).
 constexpr int MAX_ROOT_ITERATIONS = 100;
-
-/// Halvings of a closed-form step allowed to decide whether an affine guard crosses zero in it: where the bound
-/// still cannot exclude a crossing at 1/16 of a step, the guard only grazes zero (the sampled search would miss it
-/// too, at a quarter step).
-constexpr int MAX_CROSSING_REFINEMENTS = 4;
-
-/// Relative round-off of an affine guard's modal sum: values below it times the size of the guard's modal terms
-/// over a step (its curvature bound times the step squared) are zero.
-constexpr double NOISE = 1e-12;
-
-/// Crossings this close (as a fraction of the step) fire together, at the earliest.
-constexpr double SIMULTANEOUS = 1e-12;
-
-/// Guard values (dimensionless) within round-off of zero at the start of a closed-form state.
-constexpr double START_ROUND_OFF = 1e-12;
 
 struct FiredGuard
 {
   Guard guard;
   double time;
-};
-
-/// Storage of the affine search, one entry per guard: inline for the guards of a few contacts, so that a short
-/// frictionless collision does not allocate for it.
-template <class T>
-using PerGuard = boost::container::small_vector<T, 8>;
-
-/// An affine guard's value and time rate at one instant.
-struct GuardSample
-{
-  double value;
-  double rate;
-};
-
-/// An interval at whose ends a guard is ≤ 0 and > 0.
-struct Bracket
-{
-  double a, b;
-  double ga, gb;
 };
 
 /// Integrates the spring dynamics from event to event and runs the state transition diagram.
@@ -350,164 +314,27 @@ private:
     return guards;
   }
 
-  /// A closed-form state whose guards are all affine (every frictionless state, rigid links included) is searched
-  /// with bounds instead of samples: each guard's second derivative is bounded over the state, so its values and
-  /// rates at the ends of an interval prove the interval free of crossings, or the interval is halved (down to a
-  /// sixteenth of a step). It sees crossing pairs the samples could step over, with fewer evaluations. Otherwise (a
-  /// guard not affine, one above zero at the start, or the impulse curve recorded) the sampled search.
+  /// A closed-form state whose guards are all affine is searched with bounds (AffineCrossingSearch); otherwise (a
+  /// guard not affine, one above zero at the start, or the impulse curve recorded) with samples.
   Expected<bool> advanceAffine()
   {
-    const LinearPhaseStepper& stepper = closed_form_;
     const std::vector<Guard>& guards = armGuards();
     const bool all_affine = std::all_of(affine_guards_.begin(), affine_guards_.end(),
                                         [](const std::optional<AffineGuard>& form) { return form.has_value(); });
-    if (!all_affine || options_.record_samples)
+    if (!all_affine || options_.record_samples || !affine_search_.start(closed_form_, affine_guards_, t_))
       return advanceWith(closed_form_);
-    double a = t_;
-    sampleAffine(a, start_samples_);
-    for (GuardSample& sample : start_samples_)
-    {
-      // The contact that has just switched starts its new guard at zero, falling, but the state it switched at was
-      // found with the old state's modes and is re-read by the new one's: up to round-off on either side of zero.
-      if (sample.value > 0.0 && sample.value <= START_ROUND_OFF && sample.rate < 0.0)
-        sample.value = 0.0;
-      if (sample.value > 0.0)
-        return advanceWith(closed_form_);  // it must fall to zero before it can rise through it
-    }
-    curvature_.clear();
-    noise_.clear();
-    for (const std::optional<AffineGuard>& form : affine_guards_)
-    {
-      curvature_.push_back(stepper.affineGuardCurvature(*form));
-      noise_.push_back(NOISE * curvature_.back() * stepper.step() * stepper.step());
-    }
     while (true)
     {
       if (++step_count_ > options_.max_steps)
         return stepLimitError();
-      const double b = a + stepper.step();
-      sampleAffine(b, end_samples_);
-      brackets_.clear();
-      pending_[0].resize(guards.size());
-      std::iota(pending_[0].begin(), pending_[0].end(), std::size_t{0});
-      isolateCrossings(a, start_samples_, b, end_samples_, 0);
-      crossings_.clear();
-      const double simultaneous = SIMULTANEOUS * (b - a);
-      double earliest = b;
-      for (auto& [g, bracket] : brackets_)
-      {
-        if (!boundBefore(g, earliest + simultaneous, bracket))
-          continue;
-        const double zero = risingZero(g, bracket);
-        crossings_.push_back({guards[g], zero});
-        earliest = std::min(earliest, zero);
-      }
-      if (crossings_.empty())
-      {
-        a = b;
-        std::swap(start_samples_, end_samples_);
+      const PerGuard<GuardZero>& zeros = affine_search_.nextStep();
+      if (zeros.empty())
         continue;
-      }
-      return fireEarliest(stepper, b - a);
+      crossings_.clear();
+      for (const GuardZero& zero : zeros)
+        crossings_.push_back({guards[zero.guard], zero.time});
+      return fireEarliest(closed_form_, affine_search_.stepLength());
     }
-  }
-
-  /// Narrows the bracket of guard g to end by `limit`, the earliest zero found so far (a later zero cannot fire):
-  /// false when the guard is still ≤ 0 there. One evaluation instead of locating a zero that does not matter.
-  bool boundBefore(std::size_t g, double limit, Bracket& bracket) const
-  {
-    if (limit >= bracket.b)
-      return true;
-    if (limit <= bracket.a)
-      return false;
-    closed_form_.moveTo(limit);
-    const double value = closed_form_.affineGuard(*affine_guards_[g]).first;
-    if (value <= 0.0)
-      return false;
-    bracket.b = limit;
-    bracket.gb = value;
-    return true;
-  }
-
-  /// Every affine guard's value and rate at t.
-  void sampleAffine(double t, PerGuard<GuardSample>& samples) const
-  {
-    closed_form_.moveTo(t);
-    samples.clear();
-    for (const std::optional<AffineGuard>& form : affine_guards_)
-    {
-      const auto [value, rate] = closed_form_.affineGuard(*form);
-      samples.push_back({value, rate});
-    }
-  }
-
-  /// What the samples at the ends of an interval tell of one affine guard.
-  enum class Crossing
-  {
-    Bracketed,  ///< ≤ 0 at the start and > 0 at the end
-    Excluded,   ///< proven ≤ 0 throughout
-    Undecided,
-  };
-
-  /// Taylor's bound from each end covers half the interval: g(a + u) ≤ g(a) + ġ(a)u + Mu²/2, largest at an end of
-  /// the half since it is convex. Values within round-off of the guard's modal terms count as zero: a contact not
-  /// reached yet (the far end of a chain) has a velocity that is a sum of cancelling modes, and its sign is noise.
-  /// From zero, only a guard that rises leaves at once; one that falls crosses later, if at all; one that stays
-  /// there does not cross.
-  Crossing classify(std::size_t g, double a, GuardSample ga, double b, GuardSample gb) const
-  {
-    const double half = 0.5 * (b - a);
-    const double noise = noise_[g];
-    const double va = std::abs(ga.value) <= noise ? 0.0 : ga.value;
-    const double vb = std::abs(gb.value) <= noise ? 0.0 : gb.value;
-    const bool below = va < 0.0 || (va == 0.0 && ga.rate * half > noise);
-    if (below && vb > 0.0)
-      return Crossing::Bracketed;
-    if (va == 0.0 && vb == 0.0 && std::max(std::abs(ga.rate), std::abs(gb.rate)) * half <= noise)
-      return Crossing::Excluded;
-    const double curvature_term = 0.5 * curvature_[g] * half * half;
-    const bool left_clear = std::max(va, ga.value + ga.rate * half + curvature_term) <= noise;
-    const bool right_clear = std::max(vb, gb.value - gb.rate * half + curvature_term) <= noise;
-    return left_clear && right_clear ? Crossing::Excluded : Crossing::Undecided;
-  }
-
-  /// The first brackets of the guards in pending_[depth] within [a, b] into brackets_, the interval halved for all
-  /// undecided guards at once (one evaluation of the modes serves them all). The right half is searched only when
-  /// the left one holds no bracket: its zeros come later. Returns whether a bracket was found.
-  bool isolateCrossings(double a, const PerGuard<GuardSample>& at_a, double b, const PerGuard<GuardSample>& at_b,
-                        int depth)
-  {
-    PerGuard<std::size_t>& undecided = pending_[depth + 1];
-    undecided.clear();
-    bool found = false;
-    for (std::size_t g : pending_[depth])
-      switch (classify(g, a, at_a[g], b, at_b[g]))
-      {
-        case Crossing::Bracketed:
-          brackets_.push_back({g, Bracket{a, b, at_a[g].value, at_b[g].value}});
-          found = true;
-          break;
-        case Crossing::Undecided:
-          if (depth < MAX_CROSSING_REFINEMENTS)
-            undecided.push_back(g);
-          break;
-        case Crossing::Excluded:
-          break;
-      }
-    if (undecided.empty())
-      return found;
-    const double middle = 0.5 * (a + b);
-    PerGuard<GuardSample>& at_middle = middle_samples_[depth];
-    at_middle.resize(at_a.size());
-    closed_form_.moveTo(middle);
-    for (std::size_t g : undecided)
-    {
-      const auto [value, rate] = closed_form_.affineGuard(*affine_guards_[g]);
-      at_middle[g] = {value, rate};
-    }
-    if (isolateCrossings(a, at_a, middle, at_middle, depth + 1))
-      return true;
-    return isolateCrossings(middle, at_middle, b, at_b, depth + 1) || found;
   }
 
   /// Moves to the earliest of crossings_ and fires it with every other within round-off of it (of a step `width`).
@@ -693,12 +520,6 @@ private:
     return fired_;
   }
 
-  /// Width to which a guard's zero is bracketed, in a sample interval of `width` starting at `start`.
-  static double rootTolerance(double width, double start)
-  {
-    return 1e-15 * width + 4.0 * std::numeric_limits<double>::epsilon() * std::abs(start);
-  }
-
   /// The instant just after the guard's zero (so that the transition has numerically happened).
   template <class Stepper>
   double locateRoot(const Stepper& stepper, std::size_t g, double a, double b, double ga, double gb) const
@@ -711,31 +532,6 @@ private:
     const auto bracket = boost::math::tools::toms748_solve([&](double t) { return guardAt(stepper, g, t); }, a, b, ga,
                                                            gb, close_enough, iterations);
     return bracket.second;
-  }
-
-  /// The instant just after affine guard g's zero in the bracket, by Newton's method kept inside it (bisecting where
-  /// it would leave it): the closed form gives the guard's rate with its value, and this takes about half the
-  /// evaluations of TOMS 748.
-  double risingZero(std::size_t g, Bracket bracket) const
-  {
-    auto& [a, b, ga, gb] = bracket;
-    if (ga >= 0.0)
-      return a;  // rising from zero (to round-off) at a
-    const double tolerance = rootTolerance(b - a, a);
-    double t = a - ga * (b - a) / (gb - ga);
-    for (int i = 0; i < MAX_ROOT_ITERATIONS && b - a > tolerance; ++i)
-    {
-      closed_form_.moveTo(t);
-      const auto [value, rate] = closed_form_.affineGuard(*affine_guards_[g]);
-      (value > 0.0 ? b : a) = t;
-      // Once converged the zero lies well within the tolerance of t + step: a point just past it, on the other
-      // side from t, closes the bracket.
-      const double step = -value / rate;
-      const double past = std::abs(step) <= 0.25 * tolerance ? (value > 0.0 ? -0.25 : 0.25) * tolerance : 0.0;
-      const double next = t + step + past;
-      t = next > a && next < b ? next : 0.5 * (a + b);
-    }
-    return b;
   }
 
   Expected<ImpactResult> finish()
@@ -775,13 +571,7 @@ private:
   // Storage kept across the solve (a short impact is a few states; allocating per event cost a third of it).
   std::vector<Guard> guards_;
   PerGuard<std::optional<AffineGuard>> affine_guards_;  ///< of guards_
-  PerGuard<std::pair<std::size_t, Bracket>> brackets_;  ///< guards found crossing in a step, with their brackets
-  /// Guards still undecided at each depth of a step's halving, and their samples at each depth's middle.
-  std::array<PerGuard<std::size_t>, MAX_CROSSING_REFINEMENTS + 2> pending_;
-  std::array<PerGuard<GuardSample>, MAX_CROSSING_REFINEMENTS + 1> middle_samples_;
-  PerGuard<double> noise_;      ///< round-off of the affine guards' values (NOISE × their modal terms over a step)
-  PerGuard<double> curvature_;  ///< bounds on the affine guards' second derivatives
-  mutable PerGuard<GuardSample> start_samples_, end_samples_;  ///< of the affine guards at a step's ends
+  AffineCrossingSearch affine_search_;
   std::vector<FiredGuard> crossings_, fired_;
   std::vector<int> switches_;
   std::vector<bool> settled_;

@@ -1,0 +1,115 @@
+#pragma once
+
+#include <array>
+#include <boost/container/small_vector.hpp>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <utility>
+
+#include "linear_phase.hpp"
+#include "state_transitions.hpp"
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+/// Crossings this close (as a fraction of the step) fire together, at the earliest.
+constexpr double SIMULTANEOUS = 1e-12;
+
+/// Width to which a guard's zero is bracketed, in an interval of `width` starting at `start`.
+inline double rootTolerance(double width, double start)
+{
+  return 1e-15 * width + 4.0 * std::numeric_limits<double>::epsilon() * std::abs(start);
+}
+
+/// Storage of the affine search, one entry per guard: inline for the guards of a few contacts, so that a short
+/// frictionless collision does not allocate for it.
+template <class T>
+using PerGuard = boost::container::small_vector<T, 8>;
+
+/// A guard that fires, and the instant just after its zero (so that the transition has numerically happened).
+struct GuardZero
+{
+  std::size_t guard;  ///< index among the state's guards
+  double time;
+};
+
+/// The crossings of a closed-form state's guards when every one is affine (every frictionless state, rigid links
+/// included), found with bounds instead of samples.
+///
+/// Each guard is one kinematic quantity, a sum of the modes' sines: the closed form gives its value and rate, and a
+/// bound M on its second derivative over the state (from the modes' amplitudes). Taylor's bound from each end of an
+/// interval, g(a + u) ≤ g(a) + ġ(a)u + Mu²/2, then proves the interval free of crossings, or it is halved (down to a
+/// sixteenth of a step) for all undecided guards at once. Zeros are found by Newton's method kept inside their
+/// bracket. So a step costs one evaluation of the modes, at its end, where the sampled search took four, and it sees
+/// the crossing pairs those samples could step over.
+class AffineCrossingSearch
+{
+public:
+  /// Starts at t with the state's guards `forms` (each affine). False when a guard is above zero there (it must
+  /// fall to zero before it can rise through it): the sampled search takes such a state.
+  bool start(const LinearPhaseStepper& stepper, const PerGuard<std::optional<AffineGuard>>& forms, double t);
+
+  /// Searches the next step: the guards that cross in it, each with the instant just after its zero, less those
+  /// found to cross after another (the earliest fires, with any within SIMULTANEOUS of it). Empty when none
+  /// crosses; the next call searches the step after.
+  const PerGuard<GuardZero>& nextStep();
+
+  /// Length of the steps.
+  double stepLength() const { return stepper_->step(); }
+
+private:
+  /// An affine guard's value and time rate at one instant.
+  struct Sample
+  {
+    double value;
+    double rate;
+  };
+
+  /// An interval at whose ends a guard is ≤ 0 and > 0.
+  struct Bracket
+  {
+    std::size_t guard;
+    double a, b;
+    double ga, gb;
+  };
+
+  /// What the samples at the ends of an interval tell of one guard.
+  enum class Crossing
+  {
+    Bracketed,  ///< ≤ 0 at the start and > 0 at the end
+    Excluded,   ///< proven ≤ 0 throughout
+    Undecided,
+  };
+
+  static constexpr int MAX_REFINEMENTS = 4;
+
+  /// Every guard's value and rate at t into `samples`.
+  void sampleAll(double t, PerGuard<Sample>& samples) const;
+  Sample sample(std::size_t g) const;
+  Crossing classify(std::size_t g, double a, Sample ga, double b, Sample gb) const;
+  /// The first brackets of the guards in pending_[depth] within [a, b] into brackets_; whether one was found.
+  bool isolate(double a, const PerGuard<Sample>& at_a, double b, const PerGuard<Sample>& at_b, int depth);
+  /// Narrows the bracket to end by `limit` (the earliest zero found so far); false when the guard is still ≤ 0
+  /// there, so that its zero comes later and cannot fire.
+  bool endBy(double limit, Bracket& bracket) const;
+  /// The instant just after the bracketed zero.
+  double risingZero(Bracket bracket) const;
+
+  const LinearPhaseStepper* stepper_ = nullptr;
+  PerGuard<AffineGuard> guards_;
+  PerGuard<double> curvature_;  ///< bounds on the guards' second derivatives
+  PerGuard<double> noise_;      ///< round-off of the guards' values
+  double t_ = 0.0;              ///< start of the next step
+  PerGuard<Sample> at_start_, at_end_;
+  PerGuard<Bracket> brackets_;
+  PerGuard<GuardZero> zeros_;
+  /// Guards still undecided at each depth of a step's halving, and their samples at each depth's middle.
+  std::array<PerGuard<std::size_t>, MAX_REFINEMENTS + 2> pending_;
+  std::array<PerGuard<Sample>, MAX_REFINEMENTS + 1> at_middle_;
+};
+
+}  // namespace detail
+}  // namespace billiard_shot_planner
