@@ -21,8 +21,9 @@ namespace detail
 /// they obey s̈ = −S K s with S the Delassus matrix reduced by the rigid links (a Schur complement). Where S is
 /// symmetric — always without sliding, and checked with it — z = K^{1/2} s is a set of independent oscillators; the
 /// state at any instant is a sum of sines and cosines, exact to round-off. It replaces the numerical integrator in
-/// these states, with the same interface as Odeint's dense-output steppers so that the guards and the root finding
-/// stay the same.
+/// these states, with the same interface as Odeint's dense-output steppers so that the sampled guard search stays
+/// the same; where every guard is affine it also gives their values, rates and curvature bounds from the modes
+/// alone, for AffineCrossingSearch.
 ///
 /// One stepper serves a whole solve and is rebuilt at every state: its storage is kept, so that a rebuild
 /// allocates nothing once the sizes have been seen (a frictionless collision is a handful of short states).
@@ -51,7 +52,7 @@ public:
   /// cheaper than the state and its kinematics, with the rate for the root finding.
   std::pair<double, double> affineGuard(const AffineGuard& guard) const;
   /// Bound on the affine guard's second time derivative over the whole state (from the modes' amplitudes): with
-  /// its values and rates at both ends it proves an interval free of crossings (see ImpactSolver::advanceAffine).
+  /// its values and rates at both ends it proves an interval free of crossings (see AffineCrossingSearch).
   double affineGuardCurvature(const AffineGuard& guard) const;
   /// Length of a step (a fixed fraction of the fastest period).
   double step() const { return step_; }
