@@ -265,7 +265,8 @@ std::pair<double, double> LinearPhaseStepper::velocityAt(int row) const
 
 std::pair<double, double> LinearPhaseStepper::springAt(int row) const
 {
-  double spring = base_state_[static_cast<std::size_t>(space_->size + row)], rate = 0.0;
+  const Eigen::Index n = space_->size;
+  double spring = base_state_[static_cast<std::size_t>(n + row)], rate = 0.0;
   const auto moving = std::find(moving_rows_.begin(), moving_rows_.end(), row);
   if (moving == moving_rows_.end())
     return {spring, rate};
