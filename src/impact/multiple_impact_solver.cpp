@@ -286,6 +286,7 @@ private:
     if (options_.closed_form_linear_phases && tryClosedForm())
       return advanceAffine();
     followShortSlips();
+    const std::vector<Guard>& guards = armedGuards(contacts_, space_, guards_);
     omega_ = fastestFrequency();
     // 0.1 rad of the fastest mode, near the steps the tolerance allows: Bulirsch–Stoer grows a step at most fourfold
     // per step, so a smaller start costs steps at every state (0.01 rad: massé strike +22 % instructions).
@@ -296,33 +297,26 @@ private:
       if (!clock_stepper_)
         clock_stepper_.emplace(dynamics_, options_.absolute_tolerance, options_.relative_tolerance);
       clock_stepper_->restart(y_, t_, first_step);
-      return advanceWith(*clock_stepper_);
+      return advanceWith(*clock_stepper_, guards);
     }
     if (!plain_stepper_)
       plain_stepper_.emplace(options_.absolute_tolerance, options_.relative_tolerance);
     plain_stepper_->restart(y_, t_, 0.5 / omega_, first_step);
-    return advanceWith(*plain_stepper_);
-  }
-
-  /// The guards of the current state, with their affine forms.
-  const std::vector<Guard>& armGuards()
-  {
-    const std::vector<Guard>& guards = armedGuards(contacts_, space_, guards_);
-    affine_guards_.clear();
-    for (const Guard& guard : guards)
-      affine_guards_.push_back(affineForm(guard, space_));
-    return guards;
+    return advanceWith(*plain_stepper_, guards);
   }
 
   /// A closed-form state whose guards are all affine is searched with bounds (AffineCrossingSearch); otherwise (a
   /// guard not affine, one above zero at the start, or the impulse curve recorded) with samples.
   Expected<bool> advanceAffine()
   {
-    const std::vector<Guard>& guards = armGuards();
+    const std::vector<Guard>& guards = armedGuards(contacts_, space_, guards_);
+    affine_guards_.clear();
+    for (const Guard& guard : guards)
+      affine_guards_.push_back(affineForm(guard, space_));
     const bool all_affine = std::all_of(affine_guards_.begin(), affine_guards_.end(),
                                         [](const std::optional<AffineGuard>& form) { return form.has_value(); });
     if (!all_affine || options_.record_samples || !affine_search_.start(closed_form_, affine_guards_, t_))
-      return advanceWith(closed_form_);
+      return advanceWith(closed_form_, guards);
     while (true)
     {
       if (++step_count_ > options_.max_steps)
@@ -333,27 +327,38 @@ private:
       crossings_.clear();
       for (const GuardZero& zero : zeros)
         crossings_.push_back({guards[zero.guard], zero.time});
-      return fireEarliest(closed_form_, affine_search_.stepLength());
+      if (auto status = fireAll(closed_form_, earliestCrossings(affine_search_.stepLength())); !status)
+        return status.error();
+      return true;
     }
   }
 
-  /// Moves to the earliest of crossings_ and fires it with every other within round-off of it (of a step `width`).
-  template <class Stepper>
-  Expected<bool> fireEarliest(const Stepper& stepper, double width)
+  /// The earliest of crossings_ with every other within round-off of it (of a step `width`), all at the earliest
+  /// instant, into fired_.
+  const std::vector<FiredGuard>& earliestCrossings(double width)
   {
+    fired_.clear();
+    if (crossings_.empty())
+      return fired_;
     double first = crossings_.front().time;
     for (const FiredGuard& c : crossings_)
       first = std::min(first, c.time);
-    fired_.clear();
     for (const FiredGuard& c : crossings_)
       if (c.time <= first + SIMULTANEOUS * width)
         fired_.push_back({c.guard, first});
-    stepper.calc_state(first, y_);
-    t_ = physicalTime(stepper, first);
-    for (const FiredGuard& f : fired_)
+    return fired_;
+  }
+
+  /// Moves to the instant of `fired` (not empty) and fires its transitions.
+  template <class Stepper>
+  Status fireAll(const Stepper& stepper, const std::vector<FiredGuard>& fired)
+  {
+    stepper.calc_state(fired.front().time, y_);
+    t_ = physicalTime(stepper, fired.front().time);
+    for (const FiredGuard& f : fired)
       if (auto status = fire(f.guard); !status)
-        return status.error();
-    return true;
+        return status;
+    return {};
   }
 
   Error stepLimitError() const
@@ -362,10 +367,11 @@ private:
                  "the impact did not end within " + std::to_string(options_.max_steps) + " integrator steps"};
   }
 
+  /// Steps through the state to its next transition, sampling `guards`: the state's armed guards, guards_ (the root
+  /// finding reads them by index).
   template <class Stepper>
-  Expected<bool> advanceWith(Stepper& stepper)
+  Expected<bool> advanceWith(Stepper& stepper, const std::vector<Guard>& guards)
   {
-    const std::vector<Guard>& guards = armGuards();
     guard_values_.resize(SAMPLES_PER_STEP + 1, static_cast<Eigen::Index>(guards.size()));
     samples_ = SAMPLES_PER_STEP;
     bool first_row_known = sampleStart(stepper, guards);  // later, a step's first sample is the previous step's last
@@ -386,11 +392,8 @@ private:
         continue;
       }
       recordSamples(stepper, t0, fired.front().time);
-      stepper.calc_state(fired.front().time, y_);
-      t_ = physicalTime(stepper, fired.front().time);
-      for (const FiredGuard& f : fired)
-        if (auto status = fire(f.guard); !status)
-          return status.error();
+      if (auto status = fireAll(stepper, fired); !status)
+        return status.error();
       if (options_.record_samples)
         result_.samples.push_back(snapshot(y_.data(), t_));  // after the jump (e.g. the energy loss at A → A')
       return true;
@@ -493,7 +496,6 @@ private:
     const Eigen::MatrixXd& values = guard_values_;
     std::vector<FiredGuard>& crossings = crossings_;
     crossings.clear();
-    fired_.clear();
     for (std::size_t g = 0; g < guards.size(); ++g)
     {
       const auto column = static_cast<Eigen::Index>(g);
@@ -508,16 +510,7 @@ private:
         }
       }
     }
-    if (crossings.empty())
-      return fired_;
-    double first = crossings.front().time;
-    for (const FiredGuard& c : crossings)
-      first = std::min(first, c.time);
-    const double simultaneous = SIMULTANEOUS * (t1 - t0);
-    for (const FiredGuard& c : crossings)
-      if (c.time <= first + simultaneous)
-        fired_.push_back({c.guard, first});
-    return fired_;
+    return earliestCrossings(t1 - t0);
   }
 
   /// The instant just after the guard's zero (so that the transition has numerically happened).

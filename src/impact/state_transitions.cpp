@@ -137,10 +137,7 @@ TransitionEvents activate(std::size_t index, const Kinematics& kinematics, doubl
     startSlip(contact, contact.slip_direction, y, space, index, /*from_relaxed_springs=*/true);
   return {ContactEventType::Reactivation};
 }
-}  // namespace
 
-namespace
-{
 double quantityAt(const AffineGuard& guard, const Kinematics& kinematics, const ContactSpace& space)
 {
   switch (guard.quantity)
@@ -193,11 +190,7 @@ const std::vector<Guard>& armedGuards(const std::vector<ContactState>& contacts,
   return guards;
 }
 
-namespace
-{
-/// Internal linkage, so that guardValue, run at every guard sample, inlines it (a shared library's exported
-/// functions are not inlined into their own callers).
-std::optional<AffineGuard> affineFormOf(const Guard& guard, const ContactSpace& space)
+std::optional<AffineGuard> affineForm(const Guard& guard, const ContactSpace& space)
 {
   using Quantity = AffineGuard::Quantity;
   const int row = space.offset[guard.contact];
@@ -224,17 +217,11 @@ std::optional<AffineGuard> affineFormOf(const Guard& guard, const ContactSpace& 
   }
   return std::nullopt;
 }
-}  // namespace
-
-std::optional<AffineGuard> affineForm(const Guard& guard, const ContactSpace& space)
-{
-  return affineFormOf(guard, space);
-}
 
 double guardValue(const Guard& guard, const Kinematics& kinematics, const std::vector<ContactState>& contacts,
                   const ContactDynamics& dynamics, const ContactSpace& space)
 {
-  if (const std::optional<AffineGuard> affine = affineFormOf(guard, space))
+  if (const std::optional<AffineGuard> affine = affineForm(guard, space))
     return affine->sign * quantityAt(*affine, kinematics, space) + affine->offset;
   const int row = space.offset[guard.contact];
   const ContactState& contact = contacts[guard.contact];
