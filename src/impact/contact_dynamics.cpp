@@ -153,7 +153,10 @@ void ContactDynamics::followSlip(const double* y, Eigen::VectorXd& force) const
       continue;
     const Eigen::Vector2d a_t(space_.delassus.row(row + 1).dot(force), space_.delassus.row(row + 2).dot(force));
     const double turn_rate = (v_t.x() * a_t.y() - v_t.y() * a_t.x()) / (speed * speed);
-    const double sin_lag = std::clamp(coneLength(i, force) * turn_rate / speed, -1.0, 1.0);
+    // The true spring length, not the floored one of the integrated slip (coneLength): here it only sets the lag,
+    // no stiffness to bound. With the floor, 1e-6 against a true 3e-10, a slow turning slip (3e-5, a rolling ball's
+    // cloth contact under a cushion hit) lagged by 90°, and stuck and slipped again 53 000 times.
+    const double sin_lag = std::clamp(contacts_[i].coneLength(force(row)) * turn_rate / speed, -1.0, 1.0);
     const double cos_lag = std::sqrt(1.0 - sin_lag * sin_lag);
     const Eigen::Vector2d along = v_t / speed;
     directions_[i] =
