@@ -13,9 +13,6 @@ namespace
 /// over a step (its curvature bound times the step squared) are zero.
 constexpr double NOISE = 1e-12;
 
-/// Guard values (dimensionless) within round-off of zero at the start of a state.
-constexpr double START_ROUND_OFF = 1e-12;
-
 /// Newton iterations allowed for one zero (about five are needed).
 constexpr int MAX_ROOT_ITERATIONS = 100;
 }  // namespace

@@ -12,6 +12,7 @@
 #include "contact_dynamics.hpp"
 #include "contact_space.hpp"
 #include "linear_phase.hpp"
+#include "sampled_rise_search.hpp"
 #include "separation_clock.hpp"
 #include "state_transitions.hpp"
 
@@ -29,8 +30,8 @@ constexpr int SAMPLES_PER_STEP = 4;
 constexpr double MAX_STEP_SUBDIVISION = 64.0;
 
 /// Closed-form steps, in radians of the fastest mode: the guards are sums of sines of at most that frequency, so
-/// with SAMPLES_PER_STEP samples a step sees any crossing pair more than a quarter radian apart. Finer when the
-/// impulse curve is recorded for plots.
+/// with SAMPLES_PER_STEP samples a step sees any crossing pair more than a quarter radian apart by their signs, and
+/// firstRise looks between the samples for closer ones. Finer when the impulse curve is recorded for plots.
 constexpr double RADIANS_PER_CLOSED_FORM_STEP = 1.0;
 constexpr double RADIANS_PER_RECORDED_STEP = 0.125;
 
@@ -375,6 +376,8 @@ private:
     guard_values_.resize(SAMPLES_PER_STEP + 1, static_cast<Eigen::Index>(guards.size()));
     samples_ = SAMPLES_PER_STEP;
     bool first_row_known = sampleStart(stepper, guards);  // later, a step's first sample is the previous step's last
+    previous_row_known_ = false;
+    state_start_ = true;
     while (true)
     {
       if (++step_count_ > options_.max_steps)
@@ -387,7 +390,7 @@ private:
       if (fired.empty())
       {
         recordSamples(stepper, t0, t1);
-        guard_values_.row(0) = guard_values_.row(samples_);
+        keepLastSamples(t0, t1);
         first_row_known = true;
         continue;
       }
@@ -487,28 +490,36 @@ private:
     return SAMPLES_PER_STEP * static_cast<int>(std::clamp(std::ceil(half_radians), 1.0, MAX_STEP_SUBDIVISION));
   }
 
-  /// The earliest guard to rise through zero in [t0, t1] (from the samples in guard_values_), with every other one
-  /// within round-off of it.
+  /// The step's last samples become the next step's first one and the neighbour before it (for firstRise).
+  void keepLastSamples(double t0, double t1)
+  {
+    previous_time_ = sampleTime(t0, t1, samples_ - 1);
+    previous_row_ = guard_values_.row(samples_ - 1);
+    previous_row_known_ = true;
+    state_start_ = false;
+    guard_values_.row(0) = guard_values_.row(samples_);
+  }
+
+  /// The earliest guard to rise through zero in [t0, t1] (from the samples in guard_values_, refined where two may
+  /// straddle a positive bump), with every other one within round-off of it.
   template <class Stepper>
   const std::vector<FiredGuard>& firedGuards(const Stepper& stepper, const std::vector<Guard>& guards, double t0,
                                              double t1)
   {
-    const Eigen::MatrixXd& values = guard_values_;
-    std::vector<FiredGuard>& crossings = crossings_;
-    crossings.clear();
+    crossings_.clear();
     for (std::size_t g = 0; g < guards.size(); ++g)
     {
       const auto column = static_cast<Eigen::Index>(g);
-      for (int k = 0; k < samples_; ++k)
-      {
-        const double ga = values(k, column), gb = values(k + 1, column);
-        if (ga <= 0.0 && gb > 0.0)
-        {
-          const double a = sampleTime(t0, t1, k), b = sampleTime(t0, t1, k + 1);
-          crossings.push_back({guards[g], locateRoot(stepper, g, a, b, ga, gb)});
-          break;
-        }
-      }
+      samples_of_guard_.clear();
+      for (int k = 0; k <= samples_; ++k)
+        samples_of_guard_.push_back({sampleTime(t0, t1, k), guard_values_(k, column)});
+      const GuardSample before{previous_time_, previous_row_known_ ? previous_row_(column) : 0.0};
+      const bool starts_at_zero = state_start_ && std::abs(samples_of_guard_.front().g) <= START_ROUND_OFF;
+      auto evaluate = [&](double t) { return guardAt(stepper, g, t); };
+      if (const auto rise = firstRise(samples_of_guard_.data(), samples_of_guard_.size(),
+                                      previous_row_known_ ? &before : nullptr, nullptr, evaluate, starts_at_zero))
+        crossings_.push_back(
+            {guards[g], locateRoot(stepper, g, rise->below.t, rise->above.t, rise->below.g, rise->above.g)});
     }
     return earliestCrossings(t1 - t0);
   }
@@ -569,8 +580,13 @@ private:
   std::vector<int> switches_;
   std::vector<bool> settled_;
   mutable Eigen::MatrixXd guard_values_;  ///< guard samples of the current step: instants × guards
-  int samples_ = SAMPLES_PER_STEP;        ///< guard samples of the current step
-  double omega_ = 1.0;                    ///< fastest angular frequency of the current state
+  Eigen::VectorXd previous_row_;          ///< the guards at the previous step's last sample but one, at previous_time_
+  double previous_time_ = 0.0;
+  bool previous_row_known_ = false;
+  bool state_start_ = true;  ///< whether the current step is the state's first (its first sample the state's start)
+  boost::container::small_vector<GuardSample, SAMPLES_PER_STEP + 1> samples_of_guard_;  ///< scratch of firedGuards
+  int samples_ = SAMPLES_PER_STEP;  ///< guard samples of the current step
+  double omega_ = 1.0;              ///< fastest angular frequency of the current state
   double t_ = 0.0;
   std::size_t event_count_ = 0;
   std::size_t step_count_ = 0;
