@@ -390,7 +390,7 @@ private:
       if (fired.empty())
       {
         recordSamples(stepper, t0, t1);
-        keepLastSamples(t0, t1);
+        startNextStep(t0, t1);
         first_row_known = true;
         continue;
       }
@@ -490,8 +490,9 @@ private:
     return SAMPLES_PER_STEP * static_cast<int>(std::clamp(std::ceil(half_radians), 1.0, MAX_STEP_SUBDIVISION));
   }
 
-  /// The step's last samples become the next step's first one and the neighbour before it (for firstRise).
-  void keepLastSamples(double t0, double t1)
+  /// The next step starts where this one ended: its first sample is this step's last, the one before that is kept
+  /// as its neighbour (for firstRise), and it is no longer the state's first step.
+  void startNextStep(double t0, double t1)
   {
     previous_time_ = sampleTime(t0, t1, samples_ - 1);
     previous_row_ = guard_values_.row(samples_ - 1);
