@@ -377,7 +377,6 @@ private:
     samples_ = SAMPLES_PER_STEP;
     bool first_row_known = sampleStart(stepper, guards);  // later, a step's first sample is the previous step's last
     previous_row_known_ = false;
-    state_start_ = true;
     while (true)
     {
       if (++step_count_ > options_.max_steps)
@@ -491,13 +490,12 @@ private:
   }
 
   /// The next step starts where this one ended: its first sample is this step's last, the one before that is kept
-  /// as its neighbour (for firstRise), and it is no longer the state's first step.
+  /// as its neighbour (for firstRise).
   void startNextStep(double t0, double t1)
   {
     previous_time_ = sampleTime(t0, t1, samples_ - 1);
     previous_row_ = guard_values_.row(samples_ - 1);
     previous_row_known_ = true;
-    state_start_ = false;
     guard_values_.row(0) = guard_values_.row(samples_);
   }
 
@@ -515,7 +513,8 @@ private:
       for (int k = 0; k <= samples_; ++k)
         samples_of_guard_.push_back({sampleTime(t0, t1, k), guard_values_(k, column)});
       const GuardSample before{previous_time_, previous_row_known_ ? previous_row_(column) : 0.0};
-      const bool starts_at_zero = state_start_ && std::abs(samples_of_guard_.front().g) <= START_ROUND_OFF;
+      // Without a previous step this is the state's first, and its first sample the state's start.
+      const bool starts_at_zero = !previous_row_known_ && std::abs(samples_of_guard_.front().g) <= START_ROUND_OFF;
       auto evaluate = [&](double t) { return guardAt(stepper, g, t); };
       if (const auto rise = firstRise(samples_of_guard_.data(), samples_of_guard_.size(),
                                       previous_row_known_ ? &before : nullptr, nullptr, evaluate, starts_at_zero))
@@ -583,8 +582,7 @@ private:
   mutable Eigen::MatrixXd guard_values_;  ///< guard samples of the current step: instants × guards
   Eigen::VectorXd previous_row_;          ///< the guards at the previous step's last sample but one, at previous_time_
   double previous_time_ = 0.0;
-  bool previous_row_known_ = false;
-  bool state_start_ = true;  ///< whether the current step is the state's first (its first sample the state's start)
+  bool previous_row_known_ = false;  ///< false in a state's first step
   boost::container::small_vector<GuardSample, SAMPLES_PER_STEP + 1> samples_of_guard_;  ///< scratch of firedGuards
   int samples_ = SAMPLES_PER_STEP;  ///< guard samples of the current step
   double omega_ = 1.0;              ///< fastest angular frequency of the current state
