@@ -166,9 +166,16 @@ TEST(SampledRiseSearch, AStickToSlipRightAfterAStickIsNotMissed)
   hit.cloth = table.cloth;
   hit.stiffness_ratio = table.cushion_stiffness_ratio;
   expectEveryPathAgrees(hit, "rail hit");
+  // And the ball leaves as the converged integration says (integrator alone, tolerance 1e-13), to 1e-9 m/s.
+  bsp::SolverOptions converged;
+  converged.closed_form_linear_phases = false;
+  converged.separation_clock = false;
+  converged.relative_tolerance = 1e-13;
+  converged.absolute_tolerance = 1e-15;
   const auto result = bsp::solve(hit);
-  ASSERT_TRUE(result.ok());
-  EXPECT_NEAR(result.value().velocity.y(), -1.0182232228, 1e-9);
+  const auto reference = bsp::solve(hit, converged);
+  ASSERT_TRUE(result.ok() && reference.ok());
+  EXPECT_LT((result.value().velocity - reference.value().velocity).cwiseAbs().maxCoeff(), 1e-9);
 }
 
 TEST(SampledRiseSearch, ACueStrikeGrazingItsFrictionConeKeepsEveryTransition)
