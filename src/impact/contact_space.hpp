@@ -35,7 +35,11 @@ struct ContactSpace
   std::size_t contactCount() const { return offset.size(); }
 };
 
-/// Builds the contact space of a validated problem.
+/// Dimensionless velocity below which a contact velocity is round-off (the normalised velocities are of order one).
+constexpr double VELOCITY_TOLERANCE = 1e-12;
+
+/// Builds the contact space of a validated problem. A contact whose relative velocity is round-off starts at rest,
+/// exactly: a rolling ball's cloth contact carries a slip of 1e-16 from v + ω × r.
 ContactSpace buildContactSpace(const ImpactProblem& problem);
 
 }  // namespace detail

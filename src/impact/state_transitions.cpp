@@ -8,8 +8,8 @@ namespace detail
 {
 namespace
 {
-/// Dimensionless thresholds below which a velocity or force is round-off (the normalised state is of order one).
-constexpr double VELOCITY_TOLERANCE = 1e-12;
+/// Dimensionless threshold below which a force is round-off (the normalised state is of order one); velocities:
+/// VELOCITY_TOLERANCE (contact_space.hpp).
 constexpr double FORCE_TOLERANCE = 1e-12;
 /// A touching contact without force is let go only while it approaches slower than this, half the approach at
 /// which an inactive contact reactivates (VELOCITY_TOLERANCE). With one threshold for both, a contact reactivated
