@@ -67,6 +67,7 @@ public:
     result_.initial_kinetic_energy = kineticEnergy(problem.velocity);
     chatter_.energy = options.chatter_energy_fraction * result_.initial_kinetic_energy / space_.energy_scale;
     chatter_.stiffness_growth = options.chatter_stiffness_growth;
+    chatter_.deformation = options.chatter_resolution * options.absolute_tolerance;
   }
 
   Expected<ImpactResult> run()

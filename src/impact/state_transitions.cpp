@@ -60,12 +60,15 @@ void startSlip(ContactState& contact, const Eigen::Vector2d& direction, double* 
   s[2] = direction.y();
 }
 
-bool isChattering(const ContactState& contact, double stored_energy, const ChatterLimit& chatter)
+bool isChattering(const ContactState& contact, double deformation, const ChatterLimit& chatter)
 {
   if (contact.restitution == 0.0)
     return true;
-  const bool negligible = contact.ends_of_compression >= 3 && stored_energy <= chatter.energy;
-  return negligible || contact.stiffness / contact.original_stiffness >= chatter.stiffness_growth;
+  const double stored_energy = 0.5 * contact.stiffness * deformation * deformation;
+  const bool repeated = contact.ends_of_compression >= 3;
+  const bool negligible = repeated && stored_energy <= chatter.energy;
+  const bool unresolved = repeated && std::abs(deformation) <= chatter.deformation;
+  return negligible || unresolved || contact.stiffness / contact.original_stiffness >= chatter.stiffness_growth;
 }
 
 TransitionEvents endCompression(std::size_t index, double* y, std::vector<ContactState>& contacts,
@@ -81,8 +84,7 @@ TransitionEvents endCompression(std::size_t index, double* y, std::vector<Contac
     return {ContactEventType::Separation};
   }
   ++contact.ends_of_compression;
-  const double stored_energy = 0.5 * contact.stiffness * s[0] * s[0];
-  if (isChattering(contact, stored_energy, chatter))
+  if (isChattering(contact, s[0], chatter))
   {
     // Limit of infinite stiffness: the remaining normal strain energy (negligible, or lost when e = 0) is dropped.
     contact.rigid = true;
