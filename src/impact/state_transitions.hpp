@@ -79,6 +79,7 @@ struct ChatterLimit
   double energy;            ///< dimensionless stored energy below which a further end of compression means chatter
   double stiffness_growth;  ///< or once k/k̄ exceeds this
   double deformation;       ///< or once the deformation |s_n| at a third or later end of compression is below this
+                            ///< (zero in closed-form states: their springs are exact to round-off)
 };
 
 /// The events one transition logs: at most two (an end of compression that makes a rigid link, a reactivation that

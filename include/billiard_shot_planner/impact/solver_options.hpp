@@ -16,11 +16,11 @@ struct SolverOptions
   double chatter_energy_fraction = 1e-20;
   /// The same limit is taken once a contact's stiffness has grown by this factor (k/k̄ = e^{-2j}).
   double chatter_stiffness_growth = 1e14;
-  /// And once its deformation at the end of compression (normalised) is below this multiple of absolute_tolerance:
-  /// the integrator holds a spring only to that tolerance, so later cycles would carry no correct digit. A jammed
-  /// contact chatters under a large force, its deformation F/k shrinking as k grows: on random jammed cue strikes,
-  /// integrating those cycles moved the final velocities by up to 0.03 (m/s, rad/s) from the converged limit;
-  /// cut at 100 tolerances, by 6e-4.
+  /// And, in a numerically integrated state, once its deformation at the end of compression (normalised) is below
+  /// this multiple of absolute_tolerance: the integrator holds a spring only to that tolerance, so later cycles would
+  /// carry no correct digit (closed-form states hold it to round-off). A jammed contact chatters under a large
+  /// force, its deformation F/k shrinking as k grows: on random jammed cue strikes, integrating those cycles moved
+  /// the final velocities by up to 0.03 (m/s, rad/s) from the converged limit; cut at 100 tolerances, by 6e-4.
   double chatter_resolution = 100.0;
   std::size_t max_events = 200000;  ///< bound on contact events; beyond it the solve fails (never hangs)
   /// Bound on integrator steps; beyond it the solve fails (a step costs 5–25 µs). Every example takes under 1 000
