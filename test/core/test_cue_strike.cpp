@@ -36,6 +36,28 @@ void expectRelative(const Eigen::Vector3d& actual, const Eigen::Vector3d& expect
 
 /// +1 when the sliding ball's path curves left (counter-clockwise seen from above), −1 when right. The sliding
 /// friction opposes the contact slip u = v + R ẑ × ω (spec §6.2).
+/// A strike of the random sweeps: the paper's massé strike with another hit point, cue, tip and stiffness ratio.
+bsp::CueStrike sweptStrike(const Eigen::Vector3d& hit_normal, const Eigen::Vector3d& cue_direction, double cue_speed,
+                           const bsp::SurfaceContact& cue_contact, double stiffness_ratio)
+{
+  bsp::CueStrike s = bsp::paperMasseStrike();
+  s.hit_normal = hit_normal;
+  s.cue_direction = cue_direction;
+  s.cue_speed = cue_speed;
+  s.cue_contact = cue_contact;
+  s.stiffness_ratio = stiffness_ratio;
+  return s;
+}
+
+/// Relative tolerance `tolerance`, absolute a hundredth of it (the defaults' ratio).
+bsp::SolverOptions withTolerance(double tolerance)
+{
+  bsp::SolverOptions options;
+  options.relative_tolerance = tolerance;
+  options.absolute_tolerance = 1e-2 * tolerance;
+  return options;
+}
+
 int turn(const bsp::CueStrikeResult& r, double radius)
 {
   const Eigen::Vector2d v = r.velocity.head<2>();
@@ -279,15 +301,11 @@ TEST(CueStrikeInvariants, AClothThatSlipsFromTheFirstInstantSlipsAlongItsSlip)
   // loaded, so it sticks for an instant with springs of 1e-19, round-off whose direction is noise. Its slip started
   // along that noise (at the default tolerance, against the slip) and the spin depended on the tolerance by 1e-3
   // rad/s. Now it must not: default tolerance, 1e-14, and every direction integrated from its start agree to 1e-9.
-  bsp::CueStrike s = bsp::paperMasseStrike();
-  s.hit_normal = {-0.0059866718568623717, -0.8184100040856398, 0.57460353720858826};
-  s.cue_direction = {-0.63771989546842733, 0.3750190631666474, -0.67281055073872631};
-  s.cue_speed = 1.533137555961102;
-  s.cue_contact = {0.72936345541397019, 0.22113390153582657, 4.4477536323161857};
-  s.stiffness_ratio = 0.53629678795849933;
-  bsp::SolverOptions tight;
-  tight.relative_tolerance = 1e-14;
-  tight.absolute_tolerance = 1e-16;
+  const bsp::CueStrike s =
+      sweptStrike({-0.0059866718568623717, -0.8184100040856398, 0.57460353720858826},
+                  {-0.63771989546842733, 0.3750190631666474, -0.67281055073872631}, 1.533137555961102,
+                  {0.72936345541397019, 0.22113390153582657, 4.4477536323161857}, 0.53629678795849933);
+  const bsp::SolverOptions tight = withTolerance(1e-14);
   bsp::SolverOptions integrated;
   integrated.quasi_steady_slip = false;
   const auto by_default = solved(s);
@@ -310,19 +328,11 @@ TEST(CueStrikeInvariants, AJammedTipChattersToItsLimitAtAnyTolerance)
   // fell below the integrator's absolute tolerance its cycles had no correct digit: the spin came out 6.6e-3 rad/s
   // from the converged limit at the default tolerance, 4e-2 at 1e-10. The chatter is now cut where the integrator
   // stops resolving it (SolverOptions::chatter_resolution): within 1e-3 of a run at 1e-14, and within 2e-3 at 1e-10.
-  bsp::CueStrike s = bsp::paperMasseStrike();
-  s.hit_normal = {0.071073528144835946, -0.32959503703661114, 0.94144339455852588};
-  s.cue_direction = {0.26118970035386446, 0.66031324152832349, -0.70410678415380734};
-  s.cue_speed = 2.2777475086951036;
-  s.cue_contact = {0.55560555170016734, 0.4320372610856939, 2.7412141132931365};
-  s.stiffness_ratio = 0.21546825439538067;
-  bsp::SolverOptions tight;
-  tight.relative_tolerance = 1e-14;
-  tight.absolute_tolerance = 1e-16;
-  bsp::SolverOptions loose;
-  loose.relative_tolerance = 1e-10;
-  loose.absolute_tolerance = 1e-12;
-  const auto reference = bsp::solve(s, tight);
+  const bsp::CueStrike s =
+      sweptStrike({0.071073528144835946, -0.32959503703661114, 0.94144339455852588},
+                  {0.26118970035386446, 0.66031324152832349, -0.70410678415380734}, 2.2777475086951036,
+                  {0.55560555170016734, 0.4320372610856939, 2.7412141132931365}, 0.21546825439538067);
+  const auto reference = bsp::solve(s, withTolerance(1e-14));
   ASSERT_TRUE(reference.ok());
   const auto by_default = solved(s);
   EXPECT_TRUE(std::any_of(by_default.impact.events.begin(), by_default.impact.events.end(),
@@ -331,7 +341,7 @@ TEST(CueStrikeInvariants, AJammedTipChattersToItsLimitAtAnyTolerance)
   { return (r.angular_velocity - reference.value().angular_velocity).lpNorm<Eigen::Infinity>(); };
   EXPECT_LE(spinError(by_default), 1e-3);
   EXPECT_LE((by_default.velocity - reference.value().velocity).lpNorm<Eigen::Infinity>(), 1e-4);
-  const auto loosely = bsp::solve(s, loose);
+  const auto loosely = bsp::solve(s, withTolerance(1e-10));
   ASSERT_TRUE(loosely.ok());
   EXPECT_LE(spinError(loosely.value()), 2e-3);
 }
