@@ -284,13 +284,13 @@ private:
   /// turn), otherwise with Bulirsch–Stoer, on the separation clock while a sliding contact may separate.
   Expected<bool> advanceToNextEvent()
   {
+    const bool closed_form = options_.closed_form_linear_phases && tryClosedForm();
     // A chatter is cut where the method stops resolving it (SolverOptions::chatter_resolution): the integrator
     // holds springs to its absolute tolerance, the closed form to round-off. Cut in a closed-form chain, a contact
     // that merely touched lightly three times became a rigid link and the chain ended 7e-3 off.
-    chatter_.deformation = 0.0;
-    if (options_.closed_form_linear_phases && tryClosedForm())
+    chatter_.deformation = closed_form ? 0.0 : options_.chatter_resolution * options_.absolute_tolerance;
+    if (closed_form)
       return advanceAffine();
-    chatter_.deformation = options_.chatter_resolution * options_.absolute_tolerance;
     followShortSlips();
     const std::vector<Guard>& guards = armedGuards(contacts_, space_, guards_);
     omega_ = fastestFrequency();
