@@ -603,6 +603,8 @@ Expected<ImpactResult> solveMultipleImpact(const ImpactProblem& problem, const S
 {
   if (Status status = validate(problem); !status)
     return status.error();
+  if (Status status = validate(options); !status)
+    return status.error();
   try
   {
     return detail::ImpactSolver(problem, options).run();

@@ -21,15 +21,11 @@ Status validate(const ShotConfiguration& c)
   Status status = firstError({requirePositive(c.cue_mass, "cue_mass"), requirePositive(c.ball_mass, "ball_mass"),
                               requirePositive(c.ball_radius, "ball_radius"), validate(c.cue_contact, "cue_contact"),
                               requirePositive(c.stiffness_ratio, "stiffness_ratio"), validate(c.table, "table"),
-                              validate(c.motion)});
+                              validate(c.motion), validate(c.solver, "solver")});
   if (!status)
     return withParameterName(status.error());
   if (!(c.table.cushion_height > 0.0 && c.table.cushion_height < 2.0 * c.ball_radius))
     return invalidArgument("table/cushion_height", "must be between 0 and the ball's diameter");
-  if (!(c.solver.relative_tolerance > 0.0 && c.solver.relative_tolerance < 1e-2))
-    return invalidArgument("solver/relative_tolerance", "must be in (0, 0.01)");
-  if (!(c.solver.absolute_tolerance > 0.0 && c.solver.absolute_tolerance < 1e-2))
-    return invalidArgument("solver/absolute_tolerance", "must be in (0, 0.01)");
   return {};
 }
 
@@ -64,11 +60,16 @@ std::vector<NamedParameter> numericParameters(ShotConfiguration& c)
 
 Status applyOverride(ShotConfiguration& configuration, const std::string& name, double value)
 {
-  for (const NamedParameter& parameter : numericParameters(configuration))
+  // Tried on a copy: a rejected value leaves the configuration as it was.
+  ShotConfiguration changed = configuration;
+  for (const NamedParameter& parameter : numericParameters(changed))
     if (name == parameter.name)
     {
       *parameter.value = value;
-      return validate(configuration);
+      if (Status status = validate(changed); !status)
+        return status;
+      configuration = changed;
+      return {};
     }
   return invalidArgument(name, "is not a physical parameter that can be overridden");
 }

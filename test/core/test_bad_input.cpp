@@ -122,3 +122,65 @@ TEST(BadInput, EventLimitStopsInsteadOfLooping)
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.error().code, bsp::ErrorCode::EventLimitExceeded);
 }
+
+namespace
+{
+void expectOptionError(const bsp::SolverOptions& options, const std::string& field)
+{
+  const auto result = bsp::solveMultipleImpact(validProblem(), options);
+  ASSERT_FALSE(result.ok()) << "expected an error on " << field;
+  EXPECT_EQ(result.error().code, bsp::ErrorCode::InvalidArgument);
+  EXPECT_EQ(result.error().field, field);
+  EXPECT_FALSE(result.error().message.empty());
+}
+}  // namespace
+
+TEST(BadInput, SolverOptionsNameTheField)
+{
+  // Before these checks a NaN tolerance reached the integrator and a growth of 0 cut every contact's second bounce.
+  for (double bad : {NaN, INF, -1e-12, 0.0, 1e-17, 1e-2})
+  {
+    bsp::SolverOptions options;
+    options.relative_tolerance = bad;
+    expectOptionError(options, "options.relative_tolerance");
+  }
+  for (double bad : {NaN, -1e-14, 0.0, 0.5})
+  {
+    bsp::SolverOptions options;
+    options.absolute_tolerance = bad;
+    expectOptionError(options, "options.absolute_tolerance");
+  }
+  for (double bad : {NaN, INF, -1.0})
+  {
+    bsp::SolverOptions options;
+    options.chatter_energy_fraction = bad;
+    expectOptionError(options, "options.chatter_energy_fraction");
+    options = {};
+    options.chatter_resolution = bad;
+    expectOptionError(options, "options.chatter_resolution");
+  }
+  for (double bad : {NaN, 1.0, 0.0, -INF})
+  {
+    bsp::SolverOptions options;
+    options.chatter_stiffness_growth = bad;
+    expectOptionError(options, "options.chatter_stiffness_growth");
+  }
+  bsp::SolverOptions options;
+  options.max_events = 0;
+  expectOptionError(options, "options.max_events");
+  options = {};
+  options.max_steps = 0;
+  expectOptionError(options, "options.max_steps");
+}
+
+TEST(BadInput, SolverOptionsAtTheEdgesOfTheirRangesAreAccepted)
+{
+  bsp::SolverOptions options;
+  options.relative_tolerance = 1e-15;
+  options.absolute_tolerance = 1e-300;
+  options.chatter_energy_fraction = 0.0;  // no cut by energy
+  options.chatter_resolution = 0.0;       // no cut by deformation
+  options.chatter_stiffness_growth = INF;
+  EXPECT_TRUE(bsp::validate(options).ok());
+  EXPECT_TRUE(bsp::solveMultipleImpact(validProblem(), options).ok());
+}

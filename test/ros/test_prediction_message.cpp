@@ -32,10 +32,15 @@ TEST(ShotPrediction, OverridesAreValidatedByName)
   EXPECT_TRUE(bsp::applyOverride(c, "cue_contact/friction", 0.5).ok());
   EXPECT_EQ(c.cue_contact.friction, 0.5);
   EXPECT_EQ(bsp::applyOverride(c, "cue_contact/friction", -1).error().field, "cue_contact/friction");
+  EXPECT_EQ(c.cue_contact.friction, 0.5);  // a rejected value leaves the configuration as it was
   EXPECT_EQ(bsp::applyOverride(c, "warp_drive", 1).error().field, "warp_drive");
   bsp::ShotConfiguration d;
   d.table.cloth.eta2 = 0;
   EXPECT_EQ(bsp::validate(d).error().field, "table/cloth/eta2");
+  EXPECT_EQ(bsp::applyOverride(c, "solver/relative_tolerance", 1e-20).error().field, "solver/relative_tolerance");
+  bsp::ShotConfiguration e;
+  e.solver.max_steps = 0;  // not a parameter, but the configuration checks every solver option
+  EXPECT_EQ(bsp::validate(e).error().field, "solver/max_steps");
 }
 
 TEST(Tuning, RoundTripAndRejection)

@@ -1,6 +1,9 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
+
+#include "billiard_shot_planner/core/expected.hpp"
 
 namespace billiard_shot_planner
 {
@@ -41,5 +44,11 @@ struct SolverOptions
   /// integrator follows only in tiny steps and, at small loads, not always stably (for cross-checks).
   bool quasi_steady_slip = true;
 };
+
+/// Checks every field (InvalidArgument naming `field`.name): tolerances in (0, 0.01) with the relative one not
+/// below the double precision (2.2e-16), chatter_energy_fraction and chatter_resolution finite and >= 0 (0 turns
+/// that cut off), chatter_stiffness_growth > 1 (infinity turns it off), max_events and max_steps > 0.
+/// solveMultipleImpact refuses options that fail it.
+Status validate(const SolverOptions& options, const std::string& field = "options");
 
 }  // namespace billiard_shot_planner

@@ -40,7 +40,8 @@ struct NamedParameter
 /// spinning_friction,min_bounce_speed,max_time}, solver/{relative_tolerance,absolute_tolerance}.
 std::vector<NamedParameter> numericParameters(ShotConfiguration& configuration);
 
-/// Sets one numeric parameter by name. Errors: unknown name, or a value the configuration rejects.
+/// Sets one numeric parameter by name. Errors: unknown name, or a value the configuration rejects (then the
+/// configuration is left unchanged).
 Status applyOverride(ShotConfiguration& configuration, const std::string& name, double value);
 
 /// Where the cue is at the moment of contact and how fast it moves, and where the ball rests (table frame).
