@@ -24,8 +24,9 @@ constexpr double SLIP_LENGTH_FLOOR = 1e-6;
 constexpr double CLOCK_SPEED_FLOOR = 0.5;
 }  // namespace
 
-ContactDynamics::ContactDynamics(const ContactSpace& space, const std::vector<ContactState>& contacts)
-    : space_(space), contacts_(contacts)
+ContactDynamics::ContactDynamics(const ContactSpace& space, const std::vector<ContactState>& contacts,
+                                 double quasi_steady_relaxation)
+    : space_(space), contacts_(contacts), quasi_steady_relaxation_(quasi_steady_relaxation)
 {
   refresh();
 }
@@ -130,38 +131,105 @@ void ContactDynamics::forcesAlongDirections(const double* y, Eigen::VectorXd& fo
 
 void ContactDynamics::followSlip(const double* y, Eigen::VectorXd& force) const
 {
-  // Zeroth order: along the slip. Then the lag that keeps ρθ̇ = |v_t| sin(ψ − θ) with θ̇ = ψ̇, the turning rate of
-  // v_t under the forces of that first guess: sin δ = ρψ̇/|v_t|. The error left is of order ρ² in the direction
-  // and ρ³ in the force (μF_n = κρ).
+  // The lag that keeps ρθ̇ = |v_t| sin(ψ − θ), θ the slip direction's angle and ψ the slip velocity's, on the slow
+  // manifold: sin δ = ε(ψ̇ − δ̇) with δ = ψ − θ and ε = ρ/|v_t|, expanded in ε. First order (δ̇ = 0) leaves errors
+  // of order ε³ in the friction, second order of order ε⁴.
   relativeVelocity(y, follow_velocity_);
+  firstOrderLags(y, follow_velocity_, force, lags_);
+  addLagRates(y, force);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
-    if (contacts_[i].followsSlip())
-    {
-      const Eigen::Vector2d v_t = follow_velocity_.segment<2>(space_.offset[i] + 1);
-      if (v_t.norm() > 0.0)
-        directions_[i] = v_t.normalized();
-    }
+  {
+    const Eigen::Vector2d v_t = follow_velocity_.segment<2>(space_.offset[i] + 1);
+    const double speed = v_t.norm();
+    if (!contacts_[i].followsSlip() || speed == 0.0)
+      continue;
+    const double sin_lag = std::sin(lags_[i].angle), cos_lag = std::cos(lags_[i].angle);
+    const Eigen::Vector2d along = v_t / speed;
+    directions_[i] =
+        Eigen::Vector2d(cos_lag * along.x() + sin_lag * along.y(), cos_lag * along.y() - sin_lag * along.x());
+  }
+  forcesAlongDirections(y, force);
+}
+
+void ContactDynamics::firstOrderLags(const double* y, const Eigen::VectorXd& w, Eigen::VectorXd& force,
+                                     std::vector<SlipLag>& lags) const
+{
+  // Zeroth order: along the slip. Then the lag under the forces of that guess.
+  lags.assign(contacts_.size(), SlipLag{});
+  for (std::size_t i = 0; i < contacts_.size(); ++i)
+  {
+    const Eigen::Vector2d v_t = w.segment<2>(space_.offset[i] + 1);
+    if (contacts_[i].followsSlip() && v_t.norm() > 0.0)
+      directions_[i] = v_t.normalized();
+  }
   forcesAlongDirections(y, force);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
-    if (!contacts_[i].followsSlip())
-      continue;
     const int row = space_.offset[i];
-    const Eigen::Vector2d v_t = follow_velocity_.segment<2>(row + 1);
+    const Eigen::Vector2d v_t = w.segment<2>(row + 1);
     const double speed = v_t.norm();
-    if (speed == 0.0)
+    if (!contacts_[i].followsSlip() || speed == 0.0)
       continue;
     const Eigen::Vector2d a_t(space_.delassus.row(row + 1).dot(force), space_.delassus.row(row + 2).dot(force));
     const double turn_rate = (v_t.x() * a_t.y() - v_t.y() * a_t.x()) / (speed * speed);
     // The true spring length, not the floored one of the integrated slip (coneLength): here it only sets the lag,
     // no stiffness to bound. With the floor, 1e-6 against a true 3e-10, a slow turning slip (3e-5, a rolling ball's
     // cloth contact under a cushion hit) lagged by 90°, and stuck and slipped again 53 000 times.
-    const double sin_lag = std::clamp(contacts_[i].coneLength(force(row)) * turn_rate / speed, -1.0, 1.0);
-    const double cos_lag = std::sqrt(1.0 - sin_lag * sin_lag);
-    const Eigen::Vector2d along = v_t / speed;
-    directions_[i] =
-        Eigen::Vector2d(cos_lag * along.x() + sin_lag * along.y(), cos_lag * along.y() - sin_lag * along.x());
+    lags[i].relaxation = contacts_[i].coneLength(force(row)) / speed;
+    lags[i].angle = std::asin(std::clamp(lags[i].relaxation * turn_rate, -1.0, 1.0));
   }
+}
+
+void ContactDynamics::addLagRates(const double* y, const Eigen::VectorXd& force) const
+{
+  // δ̇ of the first-order lag along the motion, by a forward difference over a hundredth of the relaxation time:
+  // short against the time on which the lag changes (its truncation error is then 1e-2 of the correction's own
+  // second-order term), long enough that the lags' round-off leaves 1e-14 of the lag in the correction εδ̇.
+  constexpr double DIFFERENCE_STEP = 1e-2;
+  double step = 0.0;
+  for (const SlipLag& lag : lags_)
+    step += DIFFERENCE_STEP * lag.relaxation;  // a sum, not a maximum: smooth in the state
+  if (!(step > 0.0))
+    return;
+  // The state moved by step × its rate: İ = F, and the spring rates (written in place of the springs first).
+  const Eigen::Index n = space_.size;
+  shifted_state_.assign(y, y + 2 * n);
+  for (std::size_t i = 0; i < contacts_.size(); ++i)
+  {
+    const double cone_length = contacts_[i].sliding() ? coneLength(i, force) : 0.0;
+    springRates(i, y, follow_velocity_, cone_length, shifted_state_.data() + n + space_.offset[i]);
+  }
+  for (Eigen::Index k = 0; k < n; ++k)
+  {
+    shifted_state_[k] += step * force(k);
+    shifted_state_[n + k] = y[n + k] + step * shifted_state_[n + k];
+  }
+  const auto integratedDirections = [this](const double* state)
+  {
+    for (std::size_t i = 0; i < contacts_.size(); ++i)
+      if (contacts_[i].sliding() && !contacts_[i].followsSlip())
+        directions_[i] = carrierDirection(i, state);
+  };
+  relativeVelocity(shifted_state_.data(), shifted_velocity_);
+  integratedDirections(shifted_state_.data());
+  firstOrderLags(shifted_state_.data(), shifted_velocity_, shifted_force_, shifted_lags_);
+  integratedDirections(y);
+  for (std::size_t i = 0; i < contacts_.size(); ++i)
+  {
+    SlipLag& lag = lags_[i];
+    if (lag.relaxation == 0.0)
+      continue;
+    const double lag_rate = (shifted_lags_[i].angle - lag.angle) / step;
+    lag.angle = std::asin(std::clamp(std::sin(lag.angle) - lag.relaxation * lag_rate, -1.0, 1.0));
+  }
+}
+
+double ContactDynamics::relaxationRatio(std::size_t contact, const Eigen::VectorXd& w,
+                                        const Eigen::VectorXd& force) const
+{
+  const int row = space_.offset[contact];
+  const double speed = std::hypot(w(row + 1), w(row + 2), VELOCITY_TOLERANCE);
+  return contacts_[contact].coneLength(force(row)) / (quasi_steady_relaxation_ * speed);
 }
 
 Eigen::MatrixXd ContactDynamics::linkBasis() const

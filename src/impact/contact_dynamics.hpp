@@ -23,7 +23,9 @@ using OdeState = std::vector<double>;
 class ContactDynamics
 {
 public:
-  ContactDynamics(const ContactSpace& space, const std::vector<ContactState>& contacts);
+  /// `quasi_steady_relaxation`: the longest relaxation time ε = ρ/|v_t| of a slip direction that follows its slip
+  /// quasi-steadily (see relaxationRatio).
+  ContactDynamics(const ContactSpace& space, const std::vector<ContactState>& contacts, double quasi_steady_relaxation);
 
   /// Recomputes what depends on the discrete state (which contacts are rigid links).
   void refresh();
@@ -43,6 +45,10 @@ public:
   double linkForceRate(std::size_t contact, const Eigen::VectorXd& w, const Eigen::VectorXd& force) const;
   /// Slip direction ŝ of a sliding contact: its carrier's, or the quasi-steady one while it follows the slip.
   Eigen::Vector2d springDirection(std::size_t contact, const double* y) const;
+  /// A sliding contact's slip direction relaxes onto its slip in the time ε = ρ/|v_t| (ρ = μF_n/κ, its spring on
+  /// the friction cone): this over the quasi-steady limit. Below 1 the direction may follow its slip; at 1 it is
+  /// released to the integrator. |v_t| is floored at round-off, so a slip of round-off never counts as fast.
+  double relaxationRatio(std::size_t contact, const Eigen::VectorXd& w, const Eigen::VectorXd& force) const;
 
   /// Right-hand side for Boost.Odeint.
   void operator()(const OdeState& y, OdeState& dydt, double /*t*/) const { rates(y.data(), dydt.data()); }
@@ -65,6 +71,18 @@ private:
   Eigen::Vector2d carrierDirection(std::size_t contact, const double* y) const;
   /// Sets directions_ of the contacts that follow their slip (ContactState::quasi_steady); force is scratch.
   void followSlip(const double* y, Eigen::VectorXd& force) const;
+  /// A followed contact's first-order quasi-steady lag and relaxation time at one state.
+  struct SlipLag
+  {
+    double angle = 0.0;       ///< δ, by which the slip direction trails the slip velocity's
+    double relaxation = 0.0;  ///< ε = ρ/|v_t|
+  };
+  /// First-order lags sin δ = εψ̇ of the followed contacts at y (velocities w) into `lags`, with the forces of
+  /// directions along the slip into `force` (ψ̇ is the turning rate of v_t under them).
+  void firstOrderLags(const double* y, const Eigen::VectorXd& w, Eigen::VectorXd& force,
+                      std::vector<SlipLag>& lags) const;
+  /// Adds the second-order term to lags_ (first order at y, with `force` its forces): −εδ̇.
+  void addLagRates(const double* y, const Eigen::VectorXd& force) const;
   /// Forces with the sliding contacts' friction along directions_.
   void forcesAlongDirections(const double* y, Eigen::VectorXd& force) const;
   /// Forces of the springs alone (rigid-link normals and sliding-link friction left at zero).
@@ -83,6 +101,10 @@ private:
   const std::vector<ContactState>& contacts_;
   std::vector<std::size_t> rigid_contacts_;
   bool any_quasi_steady_ = false;
+  double quasi_steady_relaxation_;
+  mutable std::vector<SlipLag> lags_, shifted_lags_;  ///< scratch of followSlip
+  mutable OdeState shifted_state_;
+  mutable Eigen::VectorXd shifted_velocity_, shifted_force_;
   mutable std::vector<Eigen::Vector2d> directions_;  ///< slip directions of the last force evaluation
   mutable Eigen::VectorXd follow_velocity_;          ///< scratch of followSlip
   mutable Eigen::VectorXd follow_force_;             ///< scratch of springDirection and strainEnergy

@@ -34,7 +34,8 @@ struct ContactState
   /// Set when a slip starts from relaxed springs (read through followsSlip()): the slip direction then follows the
   /// tangential velocity with its quasi-steady lag instead of being integrated, because the cone's spring
   /// ρ = μF_n/κ is so short that the direction relaxes far faster than anything else moves (|v_t|/ρ), a stiff
-  /// equation. Released once ρ reaches QUASI_STEADY_CONE_LENGTH.
+  /// equation. Released once its relaxation time ρ/|v_t| reaches the quasi-steady limit
+  /// (ContactDynamics::relaxationRatio).
   bool quasi_steady = false;
 
   bool active() const { return phase != NormalPhase::Inactive; }

@@ -228,7 +228,7 @@ double guardValue(const Guard& guard, const Kinematics& kinematics, const std::v
   const int row = space.offset[guard.contact];
   const ContactState& contact = contacts[guard.contact];
   if (guard.releases_direction)
-    return contact.coneLength(kinematics.force(row)) - QUASI_STEADY_CONE_LENGTH;
+    return dynamics.relaxationRatio(guard.contact, kinematics.velocity, kinematics.force) - 1.0;
   if (guard.type == ContactEventType::StickToSlip)  // |F_t| − μ F_n, i.e. E_t − μ²η²E_n in force form (spec §2.5)
     return std::hypot(kinematics.force(row + 1), kinematics.force(row + 2)) - contact.friction * kinematics.force(row);
   if (guard.type == ContactEventType::SlipToStick)

@@ -45,10 +45,6 @@ struct AffineGuard
 /// The guard's affine form, if it has one (the tangential and direction guards do not).
 std::optional<AffineGuard> affineForm(const Guard& guard, const ContactSpace& space);
 
-/// Cone spring length (dimensionless) up to which a contact that started sliding from a relaxed spring keeps its
-/// quasi-steady slip direction. The lag's first-order formula leaves errors of order ρ³ in its friction.
-constexpr double QUASI_STEADY_CONE_LENGTH = 1e-4;
-
 /// Guard values (dimensionless) within round-off of zero at the start of a state: the contact that has just switched
 /// starts its new guard at zero, but the state it switched at was found by the old state's dynamics and is re-read by
 /// the new one's, up to round-off on either side. Both crossing searches take such a start for zero.

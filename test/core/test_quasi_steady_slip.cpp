@@ -107,7 +107,8 @@ TEST(QuasiSteadySlip, ACushionHitOnARollingBallDoesNotChatter)
   const auto following = bsp::solve(hit);
   const auto integrated = bsp::solve(hit, integratedFromTheStart());
   ASSERT_TRUE(following.ok() && integrated.ok());
-  // The quasi-steady slip's own error is larger here than elsewhere (4e-8 rad/s on spins of 50 rad/s): the slip
-  // turns at up to 1e3 per unit of collision time.
-  same_solution::expectSameSolution(following.value().impact, integrated.value().impact, 1e-7, "rolling into a rail");
+  // The quasi-steady slip's own error is larger here than elsewhere: the slip turns at up to 1e3 per unit of
+  // collision time. With the first-order lag held to a cone of 1e-4 it was 7e-8 rad/s (spins of 50 rad/s); with the
+  // second-order lag held to a relaxation time of 5.6e-4, 1.1e-8.
+  same_solution::expectSameSolution(following.value().impact, integrated.value().impact, 3e-8, "rolling into a rail");
 }
