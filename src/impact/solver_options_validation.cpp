@@ -13,6 +13,10 @@ namespace
 /// digit, so they are refused rather than computed.
 constexpr double LOOSEST_TOLERANCE = 1e-2;
 
+/// A relative tolerance finer than a double's precision cannot be met: the integrator's steps would shrink until
+/// it failed, after up to max_steps of them.
+constexpr double FINEST_RELATIVE_TOLERANCE = std::numeric_limits<double>::epsilon();
+
 /// A value as written in the options (std::to_string would print a tolerance of 1e-20 as 0.000000).
 std::string written(double value)
 {
@@ -21,51 +25,60 @@ std::string written(double value)
   return text.str();
 }
 
-Status requireTolerance(double value, const std::string& field)
+/// The options are checked at every solve: the messages, and the field names, are built only for a failed check.
+class OptionCheck
 {
-  if (!(value > 0.0 && value < LOOSEST_TOLERANCE))
-    return invalidArgument(field, "must be in (0, 0.01), got " + written(value));
-  return {};
-}
+public:
+  explicit OptionCheck(const std::string& field) : field_(field) {}
 
-/// A relative tolerance finer than a double's precision cannot be met: the integrator's steps would shrink until
-/// it failed, after up to max_steps of them.
-Status requireAttainable(double relative_tolerance, const std::string& field)
-{
-  const double precision = std::numeric_limits<double>::epsilon();
-  if (relative_tolerance < precision)
-    return invalidArgument(
-        field, "must be at least a double's precision, " + written(precision) + ", got " + written(relative_tolerance));
-  return {};
-}
+  Status tolerance(double value, double finest, const char* option) const
+  {
+    if (value >= finest && value > 0.0 && value < LOOSEST_TOLERANCE)
+      return {};
+    const std::string range = finest > 0.0 ? "[" + written(finest) + ", " : "(0, ";
+    return invalidArgument(name(option),
+                           "must be in " + range + written(LOOSEST_TOLERANCE) + "), got " + written(value));
+  }
 
-Status requireGrowth(double value, const std::string& field)
-{
-  if (!(value > 1.0))
-    return invalidArgument(field, "must be > 1 (infinity: no cut by growth), got " + written(value));
-  return {};
-}
+  Status nonNegative(double value, const char* option) const
+  {
+    if (value >= 0.0 && value < std::numeric_limits<double>::infinity())
+      return {};
+    return invalidArgument(name(option), "must be finite and >= 0 (0: no such cut), got " + written(value));
+  }
 
-Status requireCount(std::size_t value, const std::string& field)
-{
-  if (value == 0)
-    return invalidArgument(field, "must be > 0");
-  return {};
-}
+  Status growth(double value, const char* option) const
+  {
+    if (value > 1.0)
+      return {};
+    return invalidArgument(name(option), "must be > 1 (infinity: no cut by growth), got " + written(value));
+  }
+
+  Status count(std::size_t value, const char* option) const
+  {
+    if (value > 0)
+      return {};
+    return invalidArgument(name(option), "must be > 0");
+  }
+
+private:
+  std::string name(const char* option) const { return field_ + "." + option; }
+
+  const std::string& field_;
+};
 }  // namespace
 
 Status validate(const SolverOptions& options, const std::string& field)
 {
-  const std::string prefix = field + ".";
+  const OptionCheck check(field);
   return firstError({
-      requireTolerance(options.relative_tolerance, prefix + "relative_tolerance"),
-      requireAttainable(options.relative_tolerance, prefix + "relative_tolerance"),
-      requireTolerance(options.absolute_tolerance, prefix + "absolute_tolerance"),
-      requireNonNegative(options.chatter_energy_fraction, prefix + "chatter_energy_fraction"),
-      requireGrowth(options.chatter_stiffness_growth, prefix + "chatter_stiffness_growth"),
-      requireNonNegative(options.chatter_resolution, prefix + "chatter_resolution"),
-      requireCount(options.max_events, prefix + "max_events"),
-      requireCount(options.max_steps, prefix + "max_steps"),
+      check.tolerance(options.relative_tolerance, FINEST_RELATIVE_TOLERANCE, "relative_tolerance"),
+      check.tolerance(options.absolute_tolerance, 0.0, "absolute_tolerance"),
+      check.nonNegative(options.chatter_energy_fraction, "chatter_energy_fraction"),
+      check.growth(options.chatter_stiffness_growth, "chatter_stiffness_growth"),
+      check.nonNegative(options.chatter_resolution, "chatter_resolution"),
+      check.count(options.max_events, "max_events"),
+      check.count(options.max_steps, "max_steps"),
   });
 }
 
