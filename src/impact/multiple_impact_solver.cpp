@@ -39,6 +39,9 @@ constexpr double RADIANS_PER_RECORDED_STEP = 0.125;
 /// cone to follow its slip from then on (see ImpactSolver::followShortSlips): the jump it makes is at most this.
 constexpr double DIRECTION_AGREEMENT = 1e-6;
 
+/// Normal speeds (dimensionless) below this many absolute tolerances are not resolved by the integrator.
+constexpr double UNRESOLVED_SPEED = 100.0;
+
 /// Zero-time transitions one contact may make at one instant (see ImpactSolver::settle).
 constexpr int MAX_SWITCHES_PER_INSTANT = 6;
 
@@ -301,6 +304,11 @@ private:
     // holds springs to its absolute tolerance, the closed form to round-off. Cut in a closed-form chain, a contact
     // that merely touched lightly three times became a rigid link and the chain ended 7e-3 off.
     chatter_.deformation = closed_form ? 0.0 : options_.chatter_resolution * options_.absolute_tolerance;
+    // Likewise a normal velocity: the integrator holds it to about its absolute tolerance. A contact at rest at the
+    // far end of a chain, whose velocity is that noise until the collision reaches it, ended its compression at
+    // t = 0 on it, separated and came back: 129 of 2 000 random chains ended more than 1e-3 off the closed form.
+    separation_floor_ =
+        closed_form ? 0.0 : std::max(VELOCITY_TOLERANCE, UNRESOLVED_SPEED * options_.absolute_tolerance);
     if (closed_form)
       return advanceAffine();
     followShortSlips();
@@ -466,7 +474,16 @@ private:
   double guardAt(const Stepper& stepper, std::size_t g, double t) const
   {
     evaluateAt(stepper, t);
-    return guardValue(guards_[g], kinematics_buffer_, contacts_, dynamics_, space_);
+    return resolvedGuard(guards_[g], kinematics_buffer_);
+  }
+
+  /// A guard's value as the current state's method resolves it: an end of compression is due once the contact
+  /// separates faster than separation_floor_, not at the first positive noise of its normal velocity.
+  double resolvedGuard(const Guard& guard, const Kinematics& kinematics) const
+  {
+    const double value = guardValue(guard, kinematics, contacts_, dynamics_, space_);
+    const bool end_of_compression = guard.type == ContactEventType::EndOfCompression && !guard.releases_direction;
+    return end_of_compression ? value - separation_floor_ : value;
   }
 
   /// Values of every guard at evenly spaced instants of the step into guard_values_ (one state evaluation per
@@ -486,8 +503,7 @@ private:
   void storeGuardRow(int k, const std::vector<Guard>& guards) const
   {
     for (std::size_t g = 0; g < guards.size(); ++g)
-      guard_values_(k, static_cast<Eigen::Index>(g)) =
-          guardValue(guards[g], kinematics_buffer_, contacts_, dynamics_, space_);
+      guard_values_(k, static_cast<Eigen::Index>(g)) = resolvedGuard(guards[g], kinematics_buffer_);
   }
 
   double sampleTime(double t0, double t1, int k) const { return k == samples_ ? t1 : t0 + (t1 - t0) * k / samples_; }
@@ -603,6 +619,7 @@ private:
   boost::container::small_vector<GuardSample, SAMPLES_PER_STEP + 1> samples_of_guard_;  ///< scratch of firedGuards
   int samples_ = SAMPLES_PER_STEP;  ///< guard samples of the current step
   double omega_ = 1.0;              ///< fastest angular frequency of the current state
+  double separation_floor_ = 0.0;   ///< normal speed an end of compression must reach in the current state
   double t_ = 0.0;
   std::size_t event_count_ = 0;
   std::size_t step_count_ = 0;

@@ -331,9 +331,11 @@ TEST(Cushion, AtTheHeightOfTheCentreTheClothNeverLoads)
 TEST(Cushion, AContactReactivatedAtItsThresholdLoadsInsteadOfBeingLetGo)
 {
   // From a random table sweep: a ball whose spin curls it back into a soft cushion (e 0.19) meets it at 5e-12 m/s.
-  // The cushion contact separates, then reactivates at its guard's root, approaching at exactly the threshold of
+  // The cushion contact separated, then reactivated at its guard's root, approaching at exactly the threshold of
   // reactivation. The rule that lets go of a contact touching without force took that approach for none: the
-  // contact was let go at once and reactivated at the same instant until the event bound (200 000 events).
+  // contact was let go at once and reactivated at the same instant until the event bound (200 000 events). Since
+  // an end of compression in an integrated state waits for a separation speed the integrator resolves (1e-12), the
+  // contact no longer comes back at all: any reactivation must still load it (an end of compression follows).
   bsp::CushionImpact hit;
   hit.velocity = {0.84223154723387328, -5.3852930112494759e-12, 0.0};
   hit.angular_velocity = {0.0040839865442658975, 39.310115375068428, 25.463927966066368};
@@ -356,7 +358,7 @@ TEST(Cushion, AContactReactivatedAtItsThresholdLoadsInsteadOfBeingLetGo)
     EXPECT_EQ(impact.events[k + 1].type, bsp::ContactEventType::EndOfCompression);
     EXPECT_EQ(impact.events[k + 1].contact, impact.events[k].contact);
   }
-  EXPECT_EQ(reactivations, 1);
+  EXPECT_LE(reactivations, 1);
   EXPECT_LE(impact.final_kinetic_energy, impact.initial_kinetic_energy * (1.0 + 1e-12));
 }
 
@@ -365,7 +367,8 @@ TEST(Cushion, TheClothUnderANoseBelowTheCentreLetsGoAtOnce)
   // From a random table sweep: a nose at 0.57 radii, so the cushion lifts the ball off the cloth. The cloth contact
   // starts at v_n = 0 and separates at once. Its end of compression was missed when the integrator's interpolant
   // gave v_n = +6e-18 at the start instead of the state's own value: the contact stayed in compression while pulled
-  // apart, and the solve ran into the step bound (300 000 steps).
+  // apart, and the solve ran into the step bound (300 000 steps). It now ends its compression once it separates at
+  // the integrator's resolution (1e-12 of the collision's speed), within 2e-6 of the cushion's compression time.
   bsp::CushionImpact hit;
   hit.velocity = {3.9542302919004766, -0.79789615085793442, 0.0};
   hit.angular_velocity = {28.678041277547241, 58.882103295385363, 16.601380833434163};
@@ -390,7 +393,7 @@ TEST(Cushion, TheClothUnderANoseBelowTheCentreLetsGoAtOnce)
   }
   ASSERT_GE(cloth_done, 0.0);
   ASSERT_GT(cushion_compressed, 0.0);
-  EXPECT_LT(cloth_done, 1e-6 * cushion_compressed);
+  EXPECT_LT(cloth_done, 1e-5 * cushion_compressed);
   EXPECT_LT(std::abs(impact.impulses[1].normal), 1e-9 * std::abs(impact.impulses[0].normal));
   EXPECT_GT(result.value().velocity.z(), 0.0);  // lifted by the nose
   EXPECT_LE(impact.final_kinetic_energy, impact.initial_kinetic_energy * (1.0 + 1e-12));
