@@ -204,16 +204,16 @@ void ContactDynamics::addLagRates(const double* y, const Eigen::VectorXd& force)
     shifted_state_[k] += step * force(k);
     shifted_state_[n + k] = y[n + k] + step * shifted_state_[n + k];
   }
-  const auto integratedDirections = [this](const double* state)
+  const auto set_integrated_directions = [this](const double* state)
   {
     for (std::size_t i = 0; i < contacts_.size(); ++i)
       if (contacts_[i].sliding() && !contacts_[i].followsSlip())
         directions_[i] = carrierDirection(i, state);
   };
   relativeVelocity(shifted_state_.data(), shifted_velocity_);
-  integratedDirections(shifted_state_.data());
+  set_integrated_directions(shifted_state_.data());
   firstOrderLags(shifted_state_.data(), shifted_velocity_, shifted_force_, shifted_lags_);
-  integratedDirections(y);
+  set_integrated_directions(y);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
     SlipLag& lag = lags_[i];
