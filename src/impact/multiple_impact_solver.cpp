@@ -269,11 +269,10 @@ private:
 
   /// A sliding contact whose direction relaxes faster than the quasi-steady limit (its spring on the friction cone
   /// short against its slip) turns it at |v_t|/ρ, a stiff equation for explicit integration. In an integrated
-  /// state it follows its slip
-  /// quasi-steadily instead, as a slip from relaxed springs does, when its direction already agrees with the
-  /// quasi-steady one to DIRECTION_AGREEMENT (it has relaxed onto it; one that has just slipped from a loaded spring
-  /// has not, and stays integrated). A cushion grazed at 4e-8 m/s, loading its contacts with 1e-8, took 300 000
-  /// steps of 5e-6 otherwise (random table sweep).
+  /// state it follows its slip quasi-steadily instead, as a slip from relaxed springs does, when its direction
+  /// already agrees with the quasi-steady one to DIRECTION_AGREEMENT (it has relaxed onto it; one that has just slipped
+  /// from a loaded spring has not, and stays integrated). A cushion grazed at 4e-8 m/s, loading its contacts with 1e-8,
+  /// took 300 000 steps of 5e-6 otherwise (random table sweep).
   void followShortSlips()
   {
     if (!options_.quasi_steady_slip)
@@ -482,8 +481,7 @@ private:
   double resolvedGuard(const Guard& guard, const Kinematics& kinematics) const
   {
     const double value = guardValue(guard, kinematics, contacts_, dynamics_, space_);
-    const bool end_of_compression = guard.type == ContactEventType::EndOfCompression && !guard.releases_direction;
-    return end_of_compression ? value - separation_floor_ : value;
+    return guard.type == ContactEventType::EndOfCompression ? value - separation_floor_ : value;
   }
 
   /// Values of every guard at evenly spaced instants of the step into guard_values_ (one state evaluation per
