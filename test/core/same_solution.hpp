@@ -31,6 +31,17 @@ inline const bsp::ImpactResult& impactOf(const bsp::CushionImpactResult& r)
   return r.impact;
 }
 
+/// Every state integrated numerically (no closed form) at relative tolerance `tolerance`, absolute a hundredth of it:
+/// the converged reference of the closed form.
+inline bsp::SolverOptions integratedOnly(double tolerance)
+{
+  bsp::SolverOptions options;
+  options.closed_form_linear_phases = false;
+  options.relative_tolerance = tolerance;
+  options.absolute_tolerance = 1e-2 * tolerance;
+  return options;
+}
+
 /// The same events (type and contact, in order) and final velocities within `velocity_tolerance` (m/s, rad/s).
 inline void expectSameSolution(const bsp::ImpactResult& a, const bsp::ImpactResult& b, double velocity_tolerance,
                                const std::string& name)

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "billiard_shot_planner/scenarios/ball_chain.hpp"
+#include "same_solution.hpp"
 
 namespace bsp = billiard_shot_planner;
 
@@ -148,13 +149,8 @@ TEST(Chain, IntegrationAgreesWithTheClosedFormWhereTheFarBallsRestAgainstAWall)
   chain.stiffness = {0.59712626788414114, 1.3295573503133762, 1.4062745488531532, 1.1578526372343416, 1.0};
   chain.restitution = {0.52823598219265577, 0.75485962488262948, 0.0, 1.0, 0.45321804437297558};
   chain.wall = true;
-  bsp::SolverOptions integrated;
-  integrated.closed_form_linear_phases = false;
-  integrated.relative_tolerance = 1e-13;
-  integrated.absolute_tolerance = 1e-15;
   const auto closed_form = bsp::solve(chain);
-  const auto numerical = bsp::solve(chain, integrated);
+  const auto numerical = bsp::solve(chain, same_solution::integratedOnly(1e-13));
   ASSERT_TRUE(closed_form.ok() && numerical.ok());
-  EXPECT_EQ(closed_form.value().events.size(), numerical.value().events.size());
-  EXPECT_LE((closed_form.value().velocity - numerical.value().velocity).lpNorm<Eigen::Infinity>(), 1e-9);
+  same_solution::expectSameSolution(closed_form.value(), numerical.value(), 1e-9, "chain against a wall");
 }

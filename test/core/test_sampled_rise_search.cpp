@@ -167,11 +167,8 @@ TEST(SampledRiseSearch, AStickToSlipRightAfterAStickIsNotMissed)
   hit.stiffness_ratio = table.cushion_stiffness_ratio;
   expectEveryPathAgrees(hit, "rail hit");
   // And the ball leaves as the converged integration says (integrator alone, tolerance 1e-13), to 1e-9 m/s.
-  bsp::SolverOptions converged;
-  converged.closed_form_linear_phases = false;
+  bsp::SolverOptions converged = same_solution::integratedOnly(1e-13);
   converged.separation_clock = false;
-  converged.relative_tolerance = 1e-13;
-  converged.absolute_tolerance = 1e-15;
   const auto result = bsp::solve(hit);
   const auto reference = bsp::solve(hit, converged);
   ASSERT_TRUE(result.ok() && reference.ok());
