@@ -154,3 +154,27 @@ TEST(Chain, IntegrationAgreesWithTheClosedFormWhereTheFarBallsRestAgainstAWall)
   ASSERT_TRUE(closed_form.ok() && numerical.ok());
   same_solution::expectSameSolution(closed_form.value(), numerical.value(), 1e-9, "chain against a wall");
 }
+
+TEST(Chain, ATouchingContactIsLetGoWhileInactiveOnesDriftTogetherTooSlowlyToReactivate)
+{
+  // A random chain (seed 5, chain 584 of the sweep) ends with the last ball touching the wall at rest, no force
+  // anywhere, and two far balls drifting together at 7e-13, between the speed below which a touching contact may be
+  // let go (5e-13) and the one above which an inactive contact reactivates (1e-12). That drift counted as a load to
+  // come, the wall contact was never let go, and the closed-form state ran to the step bound. The two settings must
+  // now end, and agree.
+  bsp::BallChain chain;
+  chain.masses = {0.50018211486918263, 0.68139894500627363, 2.0724696563669731, 1.6198170581622238,
+                  0.73115471722982783, 0.39268971845013145, 1.6038175614691368, 0.33550577125456887};
+  chain.velocities = {1.0, 0.0, -0.32382519317701702, 0.0, 0.0, 0.0, -0.44529639913419611, 0.0};
+  chain.stiffness = {2.9274190423758748, 1.9162789792369039, 0.6113002432395267, 2.8767130443038145,
+                     0.556494260211984,  1.3155923914985399, 1.8059866088746281, 1.0};
+  chain.restitution = {
+      0.0, 0.0, 1.0, 0.60647147428615344, 0.25322575402028619, 1.0, 0.72199264010193476, 0.42478808892204767};
+  chain.wall = true;
+  const auto closed_form = bsp::solve(chain);
+  const auto numerical = bsp::solve(chain, same_solution::integratedOnly(1e-13));
+  ASSERT_TRUE(closed_form.ok()) << closed_form.error().describe();
+  ASSERT_TRUE(numerical.ok()) << numerical.error().describe();
+  EXPECT_LE((closed_form.value().velocity - numerical.value().velocity).lpNorm<Eigen::Infinity>(), 1e-9);
+  EXPECT_LE(closed_form.value().final_kinetic_energy, closed_form.value().initial_kinetic_energy * (1.0 + 1e-12));
+}
