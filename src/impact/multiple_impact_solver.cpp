@@ -267,6 +267,22 @@ private:
     return linear;
   }
 
+  /// A contact that follows its slip is released once its relaxation time reaches the quasi-steady limit, by a
+  /// guard that rises through it. One that starts a state beyond it is released at once: a rigid link reactivated
+  /// sliding (a plastic tip touching again) carries a finite force from its first instant, its guard started above
+  /// zero and never rose, and the lag stayed in use at 25 times the limit (a random strike, which then ran to the
+  /// step bound).
+  void releaseSlowRelaxations()
+  {
+    if (!std::any_of(contacts_.begin(), contacts_.end(), [](const ContactState& c) { return c.followsSlip(); }))
+      return;
+    evaluateKinematics(dynamics_, y_.data(), event_kinematics_);
+    for (std::size_t i = 0; i < contacts_.size(); ++i)
+      if (contacts_[i].followsSlip() &&
+          dynamics_.relaxationRatio(i, event_kinematics_.velocity, event_kinematics_.force) >= 1.0)
+        releaseDirection(i);
+  }
+
   /// A sliding contact whose direction relaxes faster than the quasi-steady limit (its spring on the friction cone
   /// short against its slip) turns it at |v_t|/ρ, a stiff equation for explicit integration. In an integrated
   /// state it follows its slip quasi-steadily instead, as a slip from relaxed springs does, when its direction
@@ -310,6 +326,7 @@ private:
         closed_form ? 0.0 : std::max(VELOCITY_TOLERANCE, UNRESOLVED_SPEED * options_.absolute_tolerance);
     if (closed_form)
       return advanceAffine();
+    releaseSlowRelaxations();
     followShortSlips();
     const std::vector<Guard>& guards = armedGuards(contacts_, space_, guards_);
     omega_ = fastestFrequency();

@@ -350,6 +350,40 @@ TEST(CueStrikeInvariants, SlipsFollowedQuasiSteadilyMatchIntegrationFromTheStart
   }
 }
 
+TEST(CueStrikeInvariants, APlasticTipTouchingAgainWhileItSlidesEnds)
+{
+  // Two strikes from a sweep with wide ranges (plastic tips, soft tables, small cloth friction). The tip leaves the
+  // ball and touches it again at once, a rigid link sliding with a finite force from its first instant. The first
+  // strike followed that slip quasi-steadily at 25 times the limit of its relaxation time (its release guard started
+  // above zero and never rose) and ran to the step bound; the second did the same while the release went by cone
+  // length. Both must end, as integration from the start does (same events, 1e-9 m/s and rad/s).
+  bsp::CueStrike soft_cloth =
+      sweptStrike({-0.51546468129134915, -0.49097920032930936, 0.70230733100630516},
+                  {0.18151937726589853, 0.98333698554480098, -0.0099543225115667332}, 0.66625016814202542,
+                  {0.0, 0.47103365307157263, 1.2356971054028185}, 0.038806390172254533);
+  soft_cloth.table_contact = {0.78376342398232379, 0.01854753889423252, 1.125160856305558};
+  soft_cloth.cue_mass = 0.2077372739156659;
+  bsp::CueStrike plastic_cloth =
+      sweptStrike({0.063230379963425537, -0.53517305376236246, 0.84237267380675895},
+                  {-0.039959711853070415, 0.89305556648221229, -0.44816846899771334}, 0.24624558453242479,
+                  {0.0, 0.32301849272996969, 3.6591689786174353}, 0.036302273784967504);
+  plastic_cloth.table_contact = {0.0, 0.062859644805376327, 8.2356032927085092};
+  plastic_cloth.cue_mass = 0.36912585136289217;
+  bsp::SolverOptions integrated = withTolerance(1e-13);
+  integrated.quasi_steady_slip = false;
+  for (const bsp::CueStrike& s : {soft_cloth, plastic_cloth})
+  {
+    const auto by_default = bsp::solve(s);
+    const auto reference = bsp::solve(s, integrated);
+    ASSERT_TRUE(by_default.ok()) << by_default.error().describe();
+    ASSERT_TRUE(reference.ok()) << reference.error().describe();
+    EXPECT_EQ(by_default.value().impact.events.size(), reference.value().impact.events.size());
+    EXPECT_LE((by_default.value().velocity - reference.value().velocity).lpNorm<Eigen::Infinity>(), 1e-9);
+    EXPECT_LE((by_default.value().angular_velocity - reference.value().angular_velocity).lpNorm<Eigen::Infinity>(),
+              1e-9);
+  }
+}
+
 TEST(CueStrikeInvariants, AJammedTipChattersToItsLimitAtAnyTolerance)
 {
   // A strike from the same sweep (shot 396): the tip stays pressed on the ball and chatters, some 30 ends of
