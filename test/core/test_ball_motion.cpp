@@ -454,6 +454,34 @@ TEST(Cushion, ABallCurlingIntoASoftCushionIsPredicted)
   EXPECT_LE(deepestPenetration(t, table, 0.033871492077414245), 1e-9);
 }
 
+TEST(Cushion, ATipThatSlipsOnAShortConeFollowsItsSlipOnceRelaxed)
+{
+  // From a sweep of random tables: a hopping ball grazes a nearly plastic cushion (e 3e-4) over a cloth of small
+  // friction (0.024). The cushion contact slips from a loaded spring, then becomes a rigid link, with a relaxation
+  // time ρ/|v_t| of 1e-6 of the collision's: its integrated direction relaxed onto the slip within a few of those,
+  // but was integrated on as a stiff equation, 153 000 steps (9 s for the path, once the quasi-steady release went by
+  // relaxation time; before, the path took another sequence). A slip that has relaxed is now followed
+  // quasi-steadily from the end of the step where it has: the path must end with every impact far inside a step
+  // bound of 20 000.
+  bsp::Table table;
+  table.cloth = {0.27778586242616549, 0.023531720218351863, 3.0322937484677674};
+  table.cushion = {0.00030755272638528466, 0.28191673980882598, 7.2193506293204495};
+  table.cushion_stiffness_ratio = 1.388670656839039;
+  table.cushion_height = 0.044280580569913311;
+  bsp::MotionParameters p;
+  p.sliding_friction = 0.25059821633465446;
+  p.rolling_friction = 0.011891543789761634;
+  p.spinning_friction = 0.021637359477288533;
+  p.impact.max_steps = 20000;
+  bsp::BallState start;
+  start.position << 0.507107726960627, 0.20915727107963333, 0.0286;
+  start.velocity << 0.31691211311725698, -1.4075822481269467, 0.99481430086045541;
+  start.angular_velocity << 156.78669830639049, 75.536983479265402, -28.786878151479055;
+  const auto t = predicted(start, table, p);
+  EXPECT_EQ(t.outcome, bsp::MotionOutcome::AgainstCushion);
+  EXPECT_LE(deepestPenetration(t, table, 0.0286), 1e-9);
+}
+
 TEST(Cushion, RandomShotsAlongARailNeverEnterTheCushion)
 {
   // Shots within 4 cm of the +y rail with any spin: many curl back into it. Every path stays on the table side of
