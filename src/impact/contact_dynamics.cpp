@@ -361,7 +361,7 @@ double ContactDynamics::slidingSpeed(std::size_t contact, const double* y, const
   const int row = space_.offset[contact];
   const double along = springDirection(contact, y).dot(w.segment<2>(row + 1));
   if (state.phase != NormalPhase::RigidLink)
-    return along + state.friction * state.eta2() * w(row);
+    return along + state.coneRate(w(row));
   // A rigid link has v_n = 0, but its spring on the friction cone, ρ = μf/κ, still grows and shrinks with its
   // force: σ = ŝ·v_t − ρ̇, the limit of the compliant contact's μη²v_n = −μḞ_n/κ. Without ρ̇ the link would slide
   // on while the cone outgrows the slip, and stick again with spring energy that nothing paid for.
@@ -422,7 +422,7 @@ double ContactDynamics::rates(const double* y, double* dydt) const
       // of compression) so that the clock stays smooth across that event too.
       const double v_n = velocity_scratch_(space_.offset[i]);
       const double separation_speed = std::sqrt(v_n * v_n + CLOCK_SPEED_FLOOR * CLOCK_SPEED_FLOOR);
-      shrink_rate += contact.friction * contact.eta2() * separation_speed / cone_length;
+      shrink_rate += contact.coneRate(separation_speed) / cone_length;
     }
   }
   return shrink_rate;

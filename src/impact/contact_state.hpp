@@ -48,6 +48,9 @@ struct ContactState
   bool slidingInRestitution() const { return slipping && phase == NormalPhase::Restitution; }
   /// Length of the tangential spring on the friction cone under a normal force F_n, ρ = μF_n/κ (dimensionless).
   double coneLength(double normal_force) const { return friction * normal_force / kappa; }
+  /// Rate of that length as the normal spring deforms at `normal_rate` (v_n): ρ̇ = μη²ṡ_n, and likewise for its
+  /// higher derivatives.
+  double coneRate(double normal_rate) const { return friction * eta2() * normal_rate; }
   /// Current η² = k/κ; grows by 1/e² with k at every end of compression (spec §2.4).
   double eta2() const { return stiffness / kappa; }
 };

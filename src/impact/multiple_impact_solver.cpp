@@ -571,8 +571,8 @@ private:
     if (!contact.slidingInRestitution())
       return false;
     const int row = space_.offset[i];
-    const double shrink_rate = contact.friction * contact.eta2() * std::abs(kinematics.velocity(row));
-    return shrink_rate > SEPARATION_RATE_FOLLOW * kinematics.velocity.segment<2>(row + 1).norm();
+    return contact.coneRate(std::abs(kinematics.velocity(row))) >
+           SEPARATION_RATE_FOLLOW * kinematics.velocity.segment<2>(row + 1).norm();
   }
 
   /// Whether some contact slides on an integrated direction whose relaxation time is below the quasi-steady limit.

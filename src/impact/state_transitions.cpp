@@ -39,7 +39,7 @@ void chooseInitialMode(ContactState& contact, const Eigen::VectorXd& velocity, c
   const int row = space.offset[index];
   const Eigen::Vector2d v_t(velocity(row + 1), velocity(row + 2));
   const double v_n = velocity(row);
-  if (v_t.norm() > contact.friction * contact.eta2() * std::abs(v_n) + VELOCITY_TOLERANCE)
+  if (v_t.norm() > contact.coneRate(std::abs(v_n)) + VELOCITY_TOLERANCE)
   {
     contact.slipping = true;
     contact.slip_direction = v_t.normalized();
@@ -384,7 +384,7 @@ void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vecto
     if (!contacts[i].compliant() || space.dim[i] != 3 || w.segment<3>(row).norm() > VELOCITY_TOLERANCE)
       continue;
     const Eigen::Vector2d j_t = jerk.segment<2>(row + 1);
-    const double bound = contacts[i].friction * contacts[i].eta2() * std::abs(jerk(row));
+    const double bound = contacts[i].coneRate(std::abs(jerk(row)));
     contacts[i].slipping = j_t.norm() > bound * (1.0 + 1e-12) + VELOCITY_TOLERANCE * jerk.norm();
     if (contacts[i].slipping)
       contacts[i].slip_direction = j_t.normalized();
