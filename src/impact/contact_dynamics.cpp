@@ -112,11 +112,16 @@ Eigen::VectorXd ContactDynamics::forces(const double* y) const
   return force;
 }
 
-void ContactDynamics::forces(const double* y, Eigen::VectorXd& force) const
+void ContactDynamics::useCarrierDirections(const double* y) const
 {
   for (std::size_t i = 0; i < contacts_.size(); ++i)
     if (contacts_[i].sliding())
       directions_[i] = carrierDirection(i, y);
+}
+
+void ContactDynamics::forces(const double* y, Eigen::VectorXd& force) const
+{
+  useCarrierDirections(y);
   if (any_quasi_steady_)
     followSlip(y, force);
   forcesAlongDirections(y, force);
@@ -204,16 +209,10 @@ void ContactDynamics::addLagRates(const double* y, const Eigen::VectorXd& force)
     shifted_state_[k] += step * force(k);
     shifted_state_[n + k] = y[n + k] + step * shifted_state_[n + k];
   }
-  const auto set_integrated_directions = [this](const double* state)
-  {
-    for (std::size_t i = 0; i < contacts_.size(); ++i)
-      if (contacts_[i].sliding() && !contacts_[i].followsSlip())
-        directions_[i] = carrierDirection(i, state);
-  };
   relativeVelocity(shifted_state_.data(), shifted_velocity_);
-  set_integrated_directions(shifted_state_.data());
+  useCarrierDirections(shifted_state_.data());
   firstOrderLags(shifted_state_.data(), shifted_velocity_, shifted_force_, shifted_lags_);
-  set_integrated_directions(y);
+  useCarrierDirections(y);  // followSlip then sets the followed contacts' own
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
     SlipLag& lag = lags_[i];

@@ -69,6 +69,8 @@ private:
   double coneLength(std::size_t contact, const Eigen::VectorXd& force) const;
   /// Unit direction of the tangential spring, or the stored slip direction while it is relaxed.
   Eigen::Vector2d carrierDirection(std::size_t contact, const double* y) const;
+  /// Every sliding contact's direction in directions_ from its carrier at y (followSlip overrides the followed ones).
+  void useCarrierDirections(const double* y) const;
   /// Sets directions_ of the contacts that follow their slip (ContactState::quasi_steady); force is scratch.
   void followSlip(const double* y, Eigen::VectorXd& force) const;
   /// A followed contact's first-order quasi-steady lag and relaxation time at one state.
