@@ -144,11 +144,11 @@ bool LinearPhaseStepper::build(const ContactSpace& space, const std::vector<Cont
       (reduced_ - reduced_.transpose()).lpNorm<Eigen::Infinity>() > ROUND_OFF * reduced_.lpNorm<Eigen::Infinity>())
     return false;
   symmetric_.noalias() = sqrt_k_.asDiagonal() * (0.5 * (reduced_ + reduced_.transpose())) * sqrt_k_.asDiagonal();
-  modes_.compute(symmetric_);
-  if (sliding && r > 0 && modes_.eigenvalues().minCoeff() < -ROUND_OFF * modes_.eigenvalues().cwiseAbs().maxCoeff())
+  diagonalise();
+  if (sliding && r > 0 && eigenvalues_.minCoeff() < -ROUND_OFF * eigenvalues_.cwiseAbs().maxCoeff())
     return false;  // friction could make the springs grow without bound: left to the integrator
-  omega_ = modes_.eigenvalues().cwiseMax(0.0).cwiseSqrt();
-  spring_from_modes_.noalias() = sqrt_k_.cwiseInverse().asDiagonal() * modes_.eigenvectors();
+  omega_ = eigenvalues_.cwiseMax(0.0).cwiseSqrt();
+  spring_from_modes_.noalias() = sqrt_k_.cwiseInverse().asDiagonal() * eigenvectors_;
   force_from_modes_.noalias() = force_from_s_ * spring_from_modes_;
   velocity_map_made_ = false;  // by the first affineGuardCurvature: only the affine search uses it
 
@@ -160,11 +160,38 @@ bool LinearPhaseStepper::build(const ContactSpace& space, const std::vector<Cont
     position_(a) = sqrt_k_(a) * y0[static_cast<std::size_t>(n + moving_rows_[a])];
     integral_(a) = sqrt_k_(a) * start_velocity_(moving_rows_[a]);
   }
-  modal_position_.noalias() = modes_.eigenvectors().transpose() * position_;
-  modal_velocity_.noalias() = modes_.eigenvectors().transpose() * integral_;
+  modal_position_.noalias() = eigenvectors_.transpose() * position_;
+  modal_velocity_.noalias() = eigenvectors_.transpose() * integral_;
   const double fastest = r > 0 ? omega_.maxCoeff() : 0.0;
   step_ = radians_per_step / (fastest > 0.0 ? fastest : 1.0);
   return true;
+}
+
+void LinearPhaseStepper::diagonalise()
+{
+  const Eigen::Index r = symmetric_.rows();
+  if (r > 2)
+  {
+    eigen_solver_.compute(symmetric_);
+    eigenvalues_ = eigen_solver_.eigenvalues();
+    eigenvectors_ = eigen_solver_.eigenvectors();
+    return;
+  }
+  eigenvalues_.resize(r);
+  eigenvectors_.setIdentity(r, r);
+  if (r == 1)
+    eigenvalues_(0) = symmetric_(0, 0);
+  if (r != 2)
+    return;
+  // J^T S J is diagonal for the rotation J that Eigen's Jacobi solvers apply: its columns are the eigenvectors.
+  Eigen::JacobiRotation<double> rotation;
+  rotation.makeJacobi(symmetric_, 0, 1);
+  eigenvectors_.applyOnTheRight(0, 1, rotation);
+  for (Eigen::Index k = 0; k < 2; ++k)
+  {
+    const Eigen::Vector2d v = eigenvectors_.col(k);
+    eigenvalues_(k) = v.dot(symmetric_.topLeftCorner<2, 2>() * v);
+  }
 }
 
 void LinearPhaseStepper::evaluateModes(double t) const

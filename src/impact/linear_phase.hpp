@@ -67,6 +67,9 @@ private:
   /// Whether every sliding contact keeps its direction; `any_sliding` tells if there is one.
   bool slidingDirectionsFixed(const ContactSpace& space, const std::vector<ContactState>& contacts,
                               const ContactDynamics& dynamics, const OdeState& y0, bool& any_sliding) const;
+  /// Eigenvalues and orthonormal eigenvectors of symmetric_: one Jacobi rotation for up to two springs (the states
+  /// of one or two contacts, most of a frictionless collision), Eigen's solver beyond.
+  void diagonalise();
   /// Modal positions p and their time integrals ∫p at t, into position_ and integral_.
   void evaluateModes(double t) const;
   /// Rate of mode j at the instant of the modes: ṗ = ṗ0 − ω²∫p.
@@ -100,8 +103,10 @@ private:
   Eigen::MatrixXd delassus_times_g_;  ///< W G
   Eigen::MatrixXd reduced_;           ///< (W Π)_RR
   Eigen::VectorXd sqrt_k_;
-  Eigen::MatrixXd symmetric_;  ///< K^{1/2} (W Π)_RR K^{1/2}
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> modes_;
+  Eigen::MatrixXd symmetric_;                                    ///< K^{1/2} (W Π)_RR K^{1/2}
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen_solver_;  ///< for three moving springs or more
+  Eigen::VectorXd eigenvalues_;
+  Eigen::MatrixXd eigenvectors_;  ///< Q
   OdeState probe_;
   Eigen::VectorXd probe_force_;
   mutable Eigen::VectorXd position_, integral_;  ///< modes at the last evaluated instant
