@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 #include "affine_crossing_search.hpp"
 #include "contact_dynamics.hpp"
@@ -334,8 +335,10 @@ private:
     if (!slip_may_follow_ || step_count_ < next_follow_check_)
       return false;
     evaluateAt(stepper, t1);  // the crossing search may have evaluated other instants since the samples
+    // The same slips as the candidate flag: one shrinking to separation stays on the clock even when another
+    // contact raised the flag.
     for (std::size_t i = 0; i < contacts_.size(); ++i)
-      if (hasRelaxedOntoItsSlip(i, buffer_.data(), kinematics_buffer_))
+      if (!shrinksToSeparation(i, kinematics_buffer_) && hasRelaxedOntoItsSlip(i, buffer_.data(), kinematics_buffer_))
         return true;
     // A slip that has not relaxed may take long to (on its way to separation its cone shrinks faster than its
     // direction turns, and it never does): the checks, three force evaluations each, back off geometrically. Every
@@ -558,7 +561,9 @@ private:
       evaluateAt(stepper, sampleTime(t0, t1, k));
       storeGuardRow(k, guards);
     }
-    slip_may_follow_ = anIntegratedSlipRelaxesFast(kinematics_buffer_);  // the kinematics at t1
+    // From the kinematics at t1; the closed form holds its slips fixed and never asks.
+    if constexpr (!std::is_same_v<Stepper, LinearPhaseStepper>)
+      slip_may_follow_ = anIntegratedSlipRelaxesFast(kinematics_buffer_);
   }
 
   /// Whether a sliding contact on its way to separation has a cone that shrinks fast against its slip: ρ̇ = μη²v_n
