@@ -70,15 +70,11 @@ void BM_CushionHitPlainTime(benchmark::State& state)
 /// A sliding ball on a 9-ft table without pockets that hits three cushions (hopping after each) before it stops.
 void BM_TrajectoryThreeCushions(benchmark::State& state)
 {
-  bsp::Table table;
-  table.pockets.clear();
-  bsp::BallState start;
-  start.position = {-0.5, -0.2, 0.0286};
-  start.velocity = {3.5, 1.2, 0.0};
+  const bench::ThreeCushionShot shot = bench::threeCushionShot();
   int hits = 0;
   for (auto _ : state)
   {
-    const auto trajectory = bsp::predictTrajectory(start, bsp::Ball{}, table);
+    const auto trajectory = bsp::predictTrajectory(shot.start, bsp::Ball{}, shot.table);
     hits = 0;
     for (const auto& event : trajectory.value().events)
       hits += event.type == bsp::MotionEventType::CushionHit;
@@ -124,7 +120,7 @@ BENCHMARK(BM_MassePaperMethod)->Arg(3)->Arg(4)->Arg(5)->Arg(6)->Unit(benchmark::
 BENCHMARK(BM_TrajectoryThreeCushions)->Unit(benchmark::kMicrosecond);
 
 // Argument: −log10 of the relative tolerance (12 is the default; the closed form does not depend on it).
-// velocity_error: against the reference of bench_support.hpp.
+// velocity_error: against the reference of bench_problems.hpp.
 BENCHMARK(BM_Table1)->Arg(12)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Table1Integrated)->Arg(12)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ElasticChain10)->Arg(12)->Unit(benchmark::kMicrosecond);

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Turns the Google Benchmark JSON files (median aggregates) and the service round-trip lines into bench/results.md.
 
-Usage: make_results.py ENGINE.json SICONOS.json ROUNDTRIP.txt OUTPUT.md
+Usage: make_results.py ENGINE.json SICONOS.json ROUNDTRIP.txt OUTPUT.md [INSTRUCTIONS.txt]
+
+INSTRUCTIONS.txt (optional): lines "problem instructions-per-solve" from bench/instruction_counts.cpp.
 """
 import json
 import platform
@@ -76,8 +78,41 @@ def peer_comparison(siconos, package, problem):
             f"(first-order extrapolation, {needed / ours['real_time']:.2g}× the package's time).")
 
 
+INSTRUCTION_PROBLEMS = {
+    "table1": "Table 1 ball–ball–table, default",
+    "chain10": "10-ball elastic chain, default",
+    "landing": "landing after the massé jump, default",
+    "masse": "massé cue strike, default (tolerance 1e-12)",
+    "cushion": "sliding ball into a cushion on the cloth, default",
+    "trajectory": "trajectory with 3 cushion hits, default",
+    "prediction": "the service's massé shot (strike and trajectory, library side)",
+}
+
+
+def instruction_table(path):
+    """The callgrind counts as a table; nothing when the file is missing or empty (valgrind not installed)."""
+    try:
+        counts = [line.split() for line in open(path) if line.strip()]
+    except OSError:
+        return []
+    if not counts:
+        return []
+    return [
+        "## Instructions per solve (callgrind)",
+        "",
+        "Counted around a loop of solves (bench/instruction_counts.cpp): unlike the times above, they do not move with "
+        "the load of a shared host, so they compare runs of different days.",
+        "",
+        "| problem | instructions per solve |",
+        "|---|---|",
+        *(f"| {INSTRUCTION_PROBLEMS.get(name, name)} | {int(count):,} |" for name, count in counts),
+        "",
+    ]
+
+
 def main():
     engine, peer, roundtrip, output = sys.argv[1:5]
+    instructions = sys.argv[5] if len(sys.argv) > 5 else None
     engine_data, peer_data = load(engine), load(peer)
     engine_rows = list(medians(engine_data))
     peer_rows = list(medians(peer_data))
@@ -108,12 +143,13 @@ def main():
         "",
         "Velocity error: largest difference of the final velocities (m/s; rad/s for spins) from a converged solution, "
         "the package's numerical integration alone in plain time (no closed form, separation clock or quasi-steady "
-        "slip) at tolerance 1e-14 (bench/bench_support.hpp); for Table 1 with "
+        "slip) at tolerance 1e-14 (bench/bench_problems.hpp); for Table 1 with "
         "the paper's method, from the converged values of ../shared/spec/paper_errata.md. Siconos is timed inside "
         "MultipleImpact::compute only.",
         "",
         open(roundtrip).read().strip(),
         "",
+        *(instruction_table(instructions) if instructions else []),
     ]
     open(output, "w").write("\n".join(lines))
     print("\n".join(lines))

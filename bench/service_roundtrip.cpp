@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "bench_problems.hpp"
+
 int main(int argc, char** argv)
 {
   ros::init(argc, argv, "service_roundtrip");
@@ -20,10 +22,9 @@ int main(int argc, char** argv)
   if (!ros::service::waitForService(service, ros::Duration(30)))
     return 1;
   billiard_shot_planner::PredictShot srv;
-  const Eigen::Vector3d centre(0.6, 0.1, 0.0286), n = Eigen::Vector3d(0.480151, -0.102889, 0.871131).normalized();
-  const Eigen::Vector3d c = Eigen::Vector3d(-0.2761, -0.1388, -0.9511).normalized();
-  const Eigen::Vector3d tip = centre + 0.0286 * n;
-  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), c);
+  const billiard_shot_planner::CuePlacement shot = bench::serviceMasseShot();
+  const Eigen::Vector3d& tip = shot.tip;
+  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), shot.direction);
   srv.request.cue_pose.header.frame_id = "table";
   srv.request.cue_pose.pose.position.x = tip.x();
   srv.request.cue_pose.pose.position.y = tip.y();
@@ -32,10 +33,10 @@ int main(int argc, char** argv)
   srv.request.cue_pose.pose.orientation.y = q.y();
   srv.request.cue_pose.pose.orientation.z = q.z();
   srv.request.cue_pose.pose.orientation.w = q.w();
-  srv.request.cue_speed = 3.089095;
+  srv.request.cue_speed = shot.speed;
   srv.request.ball_position.header.frame_id = "table";
-  srv.request.ball_position.point.x = centre.x();
-  srv.request.ball_position.point.y = centre.y();
+  srv.request.ball_position.point.x = shot.ball.x();
+  srv.request.ball_position.point.y = shot.ball.y();
   ros::ServiceClient client = nh.serviceClient<billiard_shot_planner::PredictShot>(service, true);
   std::vector<double> ms;
   for (int i = 0; i < calls; ++i)
