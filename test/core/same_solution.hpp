@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "../../bench/bench_problems.hpp"
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "billiard_shot_planner/scenarios/cushion_impact.hpp"
@@ -18,33 +19,10 @@ namespace same_solution
 {
 namespace bsp = billiard_shot_planner;
 
-inline const bsp::ImpactResult& impactOf(const bsp::ImpactResult& r)
-{
-  return r;
-}
-inline const bsp::ImpactResult& impactOf(const bsp::BallTableImpactResult& r)
-{
-  return r.impact;
-}
-inline const bsp::ImpactResult& impactOf(const bsp::CueStrikeResult& r)
-{
-  return r.impact;
-}
-inline const bsp::ImpactResult& impactOf(const bsp::CushionImpactResult& r)
-{
-  return r.impact;
-}
-
-/// Every state integrated numerically (no closed form) at relative tolerance `tolerance`, absolute a hundredth of it:
-/// the converged reference of the closed form.
-inline bsp::SolverOptions integratedOnly(double tolerance)
-{
-  bsp::SolverOptions options;
-  options.closed_form_linear_phases = false;
-  options.relative_tolerance = tolerance;
-  options.absolute_tolerance = 1e-2 * tolerance;
-  return options;
-}
+// The engine's result of any scenario (impactOf) and the integrated reference's settings (integratedOnly) are the
+// benchmarks' own, so that tests and benchmarks check against the same reference.
+using bench::impactOf;
+using bench::integratedOnly;
 
 /// The events of one instant (type and contact), from event k on, sorted: events at one instant may be logged in
 /// either order (a link released and a contact separating together, as their guards cross in one step or as

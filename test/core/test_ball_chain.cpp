@@ -28,16 +28,7 @@ double kinetic(const std::vector<double>& masses, const Eigen::VectorXd& v)
   return e;
 }
 
-bsp::BallChain elasticChain(std::size_t balls)
-{
-  bsp::BallChain chain;
-  chain.masses.assign(balls, 1.0);
-  chain.velocities.assign(balls, 0.0);
-  chain.velocities[0] = 1.0;
-  chain.stiffness.assign(balls - 1, 1.0);
-  chain.restitution.assign(balls - 1, 1.0);
-  return chain;
-}
+using bench::elasticChain;  // unit masses and stiffnesses, all elastic, the first ball at 1 m/s
 }  // namespace
 
 TEST(Chain, TwoBallsIsASingleImpact)
