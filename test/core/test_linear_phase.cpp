@@ -47,6 +47,20 @@ TEST(LinearPhase, FrictionlessCollisionsMatchNumericalIntegration)
   chain.stiffness = {1.0, 3.0, 0.5, 2.0};
   chain.restitution = {1.0, 0.8, 0.6, 0.9};
   expectSameSolution(chain, "uneven chain");
+  // States of two moving springs take their modes from one Jacobi rotation: its edge cases, equal diagonal terms
+  // (a rotation by 45°) and two contacts that share no ball (no coupling: no rotation at all).
+  bsp::BallChain three;
+  three.masses = {1.0, 1.0, 1.0};
+  three.velocities = {1.0, 0.0, 0.0};
+  three.stiffness = {1.0, 1.0};
+  three.restitution = {1.0, 1.0};
+  expectSameSolution(three, "three equal balls");
+  bsp::BallChain pairs;
+  pairs.masses = {1.0, 2.0, 1.0, 0.5};
+  pairs.velocities = {1.0, 0.0, 0.5, -0.5};  // balls 1 and 2 part: two collisions at once, uncoupled at first
+  pairs.stiffness = {1.0, 1.0, 2.0};
+  pairs.restitution = {0.9, 1.0, 0.7};
+  expectSameSolution(pairs, "two pairs at once");
 }
 
 TEST(LinearPhase, RigidLinksMatchNumericalIntegration)
