@@ -1,7 +1,10 @@
 // Every class of bad input gives a typed error that names the field; nothing throws.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
@@ -20,6 +23,14 @@ bsp::ImpactProblem validProblem()
   return bsp::makeImpactProblem(c).value();
 }
 
+/// One way to spoil a valid problem, and the error it must give.
+struct SpoiledProblem
+{
+  const char* field;
+  bsp::ErrorCode code;
+  std::function<void(bsp::ImpactProblem&)> spoil;
+};
+
 void expectError(const bsp::ImpactProblem& problem, bsp::ErrorCode code, const std::string& field)
 {
   const auto result = bsp::solveMultipleImpact(problem);
@@ -33,57 +44,38 @@ void expectError(const bsp::ImpactProblem& problem, bsp::ErrorCode code, const s
 TEST(BadInput, EngineNamesTheField)
 {
   using E = bsp::ErrorCode;
-  auto p = validProblem();
-  p.mass_matrix(0, 0) = NaN;
-  expectError(p, E::InvalidArgument, "mass_matrix");
-  p = validProblem();
-  p.mass_matrix(1, 1) = -1.0;
-  expectError(p, E::InvalidArgument, "mass_matrix");
-  p = validProblem();
-  p.mass_matrix(1, 1) = 0.0;
-  expectError(p, E::InvalidArgument, "mass_matrix");
-  p = validProblem();
-  p.mass_matrix(0, 1) = 0.5;
-  expectError(p, E::InvalidArgument, "mass_matrix");
-  p = validProblem();
-  p.velocity(0) = INF;
-  expectError(p, E::InvalidArgument, "velocity");
-  p = validProblem();
-  p.velocity.resize(3);
-  expectError(p, E::InvalidArgument, "velocity");
-  p = validProblem();
-  p.contacts[1].law.restitution = 1.5;
-  expectError(p, E::InvalidArgument, "contacts[1].law.restitution");
-  p = validProblem();
-  p.contacts[0].law.restitution = -0.1;
-  expectError(p, E::InvalidArgument, "contacts[0].law.restitution");
-  p = validProblem();
-  p.contacts[0].law.restitution = NaN;
-  expectError(p, E::InvalidArgument, "contacts[0].law.restitution");
-  p = validProblem();
-  p.contacts[1].law.stiffness = 0.0;
-  expectError(p, E::InvalidArgument, "contacts[1].law.stiffness");
-  p = validProblem();
-  p.contacts[1].law.stiffness = -2.0;
-  expectError(p, E::InvalidArgument, "contacts[1].law.stiffness");
-  p = validProblem();
-  p.contacts[0].law.stiffness = INF;
-  expectError(p, E::InvalidArgument, "contacts[0].law.stiffness");
-  p = validProblem();
-  p.contacts[0].normal.setZero();
-  expectError(p, E::InvalidArgument, "contacts[0].normal");
-  p = validProblem();
-  p.contacts[0].normal(0) = NaN;
-  expectError(p, E::InvalidArgument, "contacts[0].normal");
-  p = validProblem();
-  p.contacts.clear();
-  expectError(p, E::InvalidArgument, "contacts");
-  p = validProblem();
-  p.velocity.setZero();
-  expectError(p, E::NoApproachingContact, "velocity");
-  p = validProblem();
-  p.velocity(0) = +1.0;
-  expectError(p, E::NoApproachingContact, "velocity");
+  const std::vector<SpoiledProblem> cases = {
+      {"mass_matrix", E::InvalidArgument, [](bsp::ImpactProblem& p) { p.mass_matrix(0, 0) = NaN; }},
+      {"mass_matrix", E::InvalidArgument, [](bsp::ImpactProblem& p) { p.mass_matrix(1, 1) = -1.0; }},
+      {"mass_matrix", E::InvalidArgument, [](bsp::ImpactProblem& p) { p.mass_matrix(1, 1) = 0.0; }},
+      {"mass_matrix", E::InvalidArgument, [](bsp::ImpactProblem& p) { p.mass_matrix(0, 1) = 0.5; }},
+      {"velocity", E::InvalidArgument, [](bsp::ImpactProblem& p) { p.velocity(0) = INF; }},
+      {"velocity", E::InvalidArgument, [](bsp::ImpactProblem& p) { p.velocity.resize(3); }},
+      {"contacts[1].law.restitution", E::InvalidArgument,
+       [](bsp::ImpactProblem& p) { p.contacts[1].law.restitution = 1.5; }},
+      {"contacts[0].law.restitution", E::InvalidArgument,
+       [](bsp::ImpactProblem& p) { p.contacts[0].law.restitution = -0.1; }},
+      {"contacts[0].law.restitution", E::InvalidArgument,
+       [](bsp::ImpactProblem& p) { p.contacts[0].law.restitution = NaN; }},
+      {"contacts[1].law.stiffness", E::InvalidArgument,
+       [](bsp::ImpactProblem& p) { p.contacts[1].law.stiffness = 0.0; }},
+      {"contacts[1].law.stiffness", E::InvalidArgument,
+       [](bsp::ImpactProblem& p) { p.contacts[1].law.stiffness = -2.0; }},
+      {"contacts[0].law.stiffness", E::InvalidArgument,
+       [](bsp::ImpactProblem& p) { p.contacts[0].law.stiffness = INF; }},
+      {"contacts[0].normal", E::InvalidArgument, [](bsp::ImpactProblem& p) { p.contacts[0].normal.setZero(); }},
+      {"contacts[0].normal", E::InvalidArgument, [](bsp::ImpactProblem& p) { p.contacts[0].normal(0) = NaN; }},
+      {"contacts", E::InvalidArgument, [](bsp::ImpactProblem& p) { p.contacts.clear(); }},
+      {"velocity", E::NoApproachingContact, [](bsp::ImpactProblem& p) { p.velocity.setZero(); }},
+      {"velocity", E::NoApproachingContact, [](bsp::ImpactProblem& p) { p.velocity(0) = +1.0; }},
+  };
+  for (std::size_t k = 0; k < cases.size(); ++k)
+  {
+    SCOPED_TRACE("case " + std::to_string(k));
+    bsp::ImpactProblem problem = validProblem();
+    cases[k].spoil(problem);
+    expectError(problem, cases[k].code, cases[k].field);
+  }
 }
 
 TEST(BadInput, ScenarioBuildersNameTheirOwnFields)
