@@ -311,10 +311,9 @@ private:
   /// relaxed onto its quasi-steady direction (to DIRECTION_AGREEMENT) at y, whose kinematics are given.
   bool hasRelaxedOntoItsSlip(std::size_t i, const double* y, const Kinematics& kinematics)
   {
-    ContactState& contact = contacts_[i];
-    if (!contact.sliding() || contact.quasi_steady ||
-        dynamics_.relaxationRatio(i, kinematics.velocity, kinematics.force) >= 1.0)
+    if (!relaxesFast(i, kinematics))
       return false;
+    ContactState& contact = contacts_[i];
     const Eigen::Vector2d integrated = dynamics_.springDirection(i, y);
     contact.quasi_steady = true;
     dynamics_.refresh();
@@ -580,14 +579,22 @@ private:
            SEPARATION_RATE_FOLLOW * kinematics.velocity.segment<2>(row + 1).norm();
   }
 
-  /// Whether some contact slides on an integrated direction whose relaxation time is below the quasi-steady limit.
+  /// Whether contact i slides on an integrated direction whose relaxation time is below the quasi-steady limit.
+  bool relaxesFast(std::size_t i, const Kinematics& kinematics) const
+  {
+    const ContactState& contact = contacts_[i];
+    return contact.sliding() && !contact.quasi_steady &&
+           dynamics_.relaxationRatio(i, kinematics.velocity, kinematics.force) < 1.0;
+  }
+
+  /// Whether some contact could be handed to the quasi-steady lag mid-state: its integrated slip relaxes fast and
+  /// it is not on its way to separation with a fast-shrinking cone.
   bool anIntegratedSlipRelaxesFast(const Kinematics& kinematics) const
   {
     if (!options_.quasi_steady_slip)
       return false;
     for (std::size_t i = 0; i < contacts_.size(); ++i)
-      if (contacts_[i].sliding() && !contacts_[i].quasi_steady && !shrinksToSeparation(i, kinematics) &&
-          dynamics_.relaxationRatio(i, kinematics.velocity, kinematics.force) < 1.0)
+      if (relaxesFast(i, kinematics) && !shrinksToSeparation(i, kinematics))
         return true;
     return false;
   }
