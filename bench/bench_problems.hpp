@@ -131,15 +131,16 @@ inline ThreeCushionShot threeCushionShot()
   return shot;
 }
 
-/// The paper's massé shot as the service round trip asks for it (table frame): the cue tip on the ball at the
-/// hit normal of §9.2, moving along the cue direction at 3.09 m/s.
+/// The paper's massé shot (bsp::paperMasseStrike) as the service round trip asks for it (table frame): the cue tip
+/// on the ball at the strike's hit normal, moving along its cue direction at its speed.
 inline bsp::CuePlacement serviceMasseShot()
 {
-  const Eigen::Vector3d centre(0.6, 0.1, 0.0286);
+  const bsp::CueStrike strike = bsp::paperMasseStrike();
+  const Eigen::Vector3d centre(0.6, 0.1, strike.ball_radius);
   bsp::CuePlacement cue;
-  cue.tip = centre + 0.0286 * Eigen::Vector3d(0.480151, -0.102889, 0.871131).normalized();
-  cue.direction = Eigen::Vector3d(-0.2761, -0.1388, -0.9511).normalized();
-  cue.speed = 3.089095;
+  cue.tip = centre + strike.ball_radius * strike.hit_normal.normalized();
+  cue.direction = strike.cue_direction.normalized();
+  cue.speed = strike.cue_speed;
   cue.ball = centre.head<2>();
   return cue;
 }
