@@ -20,11 +20,7 @@ namespace
 {
 bsp::SolverOptions numerical()
 {
-  bsp::SolverOptions options;
-  options.closed_form_linear_phases = false;
-  options.relative_tolerance = 1e-13;
-  options.absolute_tolerance = 1e-15;
-  return options;
+  return same_solution::integratedOnly(1e-13);
 }
 
 template <class Problem>

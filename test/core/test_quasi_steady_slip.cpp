@@ -18,10 +18,8 @@ namespace
 {
 bsp::SolverOptions integratedFromTheStart()
 {
-  bsp::SolverOptions options;
+  bsp::SolverOptions options = bench::withTolerance(1e-13);
   options.quasi_steady_slip = false;
-  options.relative_tolerance = 1e-13;
-  options.absolute_tolerance = 1e-15;
   return options;
 }
 

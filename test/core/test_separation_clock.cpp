@@ -16,10 +16,8 @@ namespace
 {
 bsp::SolverOptions plainTime()
 {
-  bsp::SolverOptions options;
+  bsp::SolverOptions options = bench::withTolerance(1e-13);
   options.separation_clock = false;
-  options.relative_tolerance = 1e-13;
-  options.absolute_tolerance = 1e-15;
   return options;
 }
 
