@@ -360,6 +360,61 @@ std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std
   return std::nullopt;
 }
 
+namespace
+{
+/// Relative size below which a derivative of a resting contact's normal velocity is round-off of the others.
+constexpr double PRESS_TOLERANCE = 1e-12;
+
+/// Whether the impact presses a contact that touches at rest at 0⁺: the sign of the first derivative of its normal
+/// velocity that is not zero. With every spring relaxed, ẇ(0) = W F(0) = 0 and ẅ(0) = W Ḟ(0) = `jerk`; while the
+/// dynamics is that of the springs, Ḟ = −K w, so the even derivatives go on as d ← −W K d (the odd ones vanish).
+/// A contact that the approaching ones load only through others (the far balls of a chain) sees a later
+/// derivative; one that no derivative reaches within as many orders as there are contacts is never pressed (the
+/// cloth under a level hit through the ball's centre).
+bool isPressed(std::size_t index, const Eigen::VectorXd& jerk, const Eigen::VectorXd& w,
+               const std::vector<ContactState>& contacts, const ContactSpace& space)
+{
+  // The springs' stiffness along each row. A resting contact's friction is bounded by its own normal force, which is
+  // what is being decided: its tangential springs hold nothing at these orders.
+  Eigen::VectorXd stiffness = Eigen::VectorXd::Zero(space.size);
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+  {
+    if (!contacts[i].compliant())
+      continue;
+    const int row = space.offset[i];
+    stiffness(row) = contacts[i].stiffness;
+    const bool resting = std::abs(w(row)) <= VELOCITY_TOLERANCE;
+    if (space.dim[i] == 3 && !contacts[i].slipping && !resting)
+      stiffness.segment<2>(row + 1).setConstant(contacts[i].kappa);
+  }
+  const int row = space.offset[index];
+  Eigen::VectorXd derivative = jerk;
+  for (std::size_t order = 0; order <= contacts.size(); ++order)
+  {
+    const double value = derivative(row);
+    if (std::abs(value) > PRESS_TOLERANCE * derivative.lpNorm<Eigen::Infinity>())
+      return value < 0.0;
+    derivative = -(space.delassus * stiffness.asDiagonal() * derivative).eval();
+  }
+  return false;
+}
+}  // namespace
+
+void releaseUnpressedRestingContacts(const Eigen::VectorXd& jerk, const Eigen::VectorXd& w,
+                                     std::vector<ContactState>& contacts, const ContactSpace& space)
+{
+  std::vector<std::size_t> unpressed;
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+  {
+    const bool resting = contacts[i].compliant() && std::abs(w(space.offset[i])) <= VELOCITY_TOLERANCE;
+    if (resting && !isPressed(i, jerk, w, contacts, space))
+      unpressed.push_back(i);
+  }
+  // Decided together: each decision assumes the others' springs take part, as they do at 0⁺.
+  for (std::size_t i : unpressed)
+    contacts[i].phase = NormalPhase::Inactive;
+}
+
 void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vector<ContactState>& contacts,
                         const ContactSpace& space)
 {
@@ -378,6 +433,7 @@ void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vecto
       force_rate.segment<2>(row + 1) = -contacts[i].kappa * Eigen::Vector2d(spring_rate[1], spring_rate[2]);
   }
   const Eigen::VectorXd jerk = space.delassus * force_rate;
+  releaseUnpressedRestingContacts(jerk, w, contacts, space);
   for (std::size_t i = 0; i < contacts.size(); ++i)
   {
     const int row = space.offset[i];

@@ -96,9 +96,17 @@ TransitionEvents applyTransition(const Guard& guard, const Kinematics& kinematic
 std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std::vector<ContactState>& contacts,
                                          const ContactSpace& space, const std::vector<bool>& settled);
 
+/// Contacts that touch at rest when the impact starts (a ball on the cloth under the cue) take part only if the
+/// impact presses them together: those that the approaching contacts pull apart (a draw shot lifting the ball) or
+/// never load (a level hit through the ball's centre) start inactive, and join later by reactivation if they are
+/// pressed after all. `jerk` = d²w/dt² at 0⁺, `w` the initial contact velocities.
+void releaseUnpressedRestingContacts(const Eigen::VectorXd& jerk, const Eigen::VectorXd& w,
+                                     std::vector<ContactState>& contacts, const ContactSpace& space);
+
 /// Initial tangential mode of contacts that start at rest relative to each other (spec §2.8b, the ball on the
 /// cloth at the first instant of a shot): the limit of the spring ratio is set by J = d²w/dt² at 0⁺, so the contact
 /// sticks iff |J_t| ≤ μη²|J_n|, and otherwise slips along Ĵ_t.
+/// First releases the resting contacts that the impact does not press (releaseUnpressedRestingContacts).
 /// Also places the slip-direction carrier of every contact that starts slipping.
 void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vector<ContactState>& contacts,
                         const ContactSpace& space);
