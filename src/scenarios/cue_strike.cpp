@@ -1,5 +1,7 @@
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 
+#include <cmath>
+
 #include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
 #include "surface_contact_checks.hpp"
@@ -8,52 +10,65 @@ namespace billiard_shot_planner
 {
 namespace
 {
-/// Tolerance on n̂·ẑ = 0 for a hit exactly on the equator.
-constexpr double EQUATOR_TOLERANCE = 1e-12;
-
 Status check(const CueStrike& s)
 {
-  return firstError({requirePositive(s.cue_mass, "cue_mass"), requireDirection(s.cue_direction, "cue_direction"),
-                     requirePositive(s.cue_speed, "cue_speed"), requirePositive(s.ball_mass, "ball_mass"),
-                     requirePositive(s.ball_radius, "ball_radius"), requireDirection(s.hit_normal, "hit_normal"),
-                     validate(s.cue_contact, "cue_contact"), validate(s.table_contact, "table_contact"),
+  return firstError({requirePositive(s.cue_mass, "cue_mass"), requirePositiveOrInfinite(s.cue_end_mass, "cue_end_mass"),
+                     requireDirection(s.cue_direction, "cue_direction"), requirePositive(s.cue_speed, "cue_speed"),
+                     requirePositive(s.ball_mass, "ball_mass"), requirePositive(s.ball_radius, "ball_radius"),
+                     requireDirection(s.hit_normal, "hit_normal"), validate(s.cue_contact, "cue_contact"),
+                     validate(s.table_contact, "table_contact"),
                      requirePositive(s.stiffness_ratio, "stiffness_ratio")});
 }
 
-/// The assumptions of paper §8 under which both impacts are active from the start.
-Status checkGeometry(const Eigen::Vector3d& n, const Eigen::Vector3d& c)
+/// The one impossibility of a hit that the tip can make: the tip must approach the ball where it touches it.
+Status checkApproach(const Eigen::Vector3d& n, const Eigen::Vector3d& c)
 {
   if (!(n.dot(c) < 0.0))
     return Error{
         ErrorCode::InvalidShot, "cue_direction",
         "the cue does not approach the ball at the hit point (n.c = " + std::to_string(n.dot(c)) + " must be < 0)"};
-  const double height = n.z();
-  if (height < -EQUATOR_TOLERANCE || (std::abs(height) <= EQUATOR_TOLERANCE && !(c.z() < 0.0)))
-    return Error{ErrorCode::InvalidShot, "hit_normal",
-                 "the hit point must be above the ball's equator, or on it with the cue pointing down (paper "
-                 "section 8)"};
   return {};
 }
 
-/// Generalised velocity (v_c, v, ω): the cue along ĉ, the ball's linear and angular velocity.
+/// The tip's degrees of freedom: along ĉ, and across it (two) when its end mass is finite.
+int tipDofs(const CueStrike& s)
+{
+  return std::isinf(s.cue_end_mass) ? 1 : 3;
+}
+
+/// Unit directions of the tip's degrees of freedom, as columns: ĉ, then two axes across it.
+Eigen::Matrix3d tipAxes(const Eigen::Vector3d& c)
+{
+  const Eigen::Matrix3d across = contactFrame(c);
+  Eigen::Matrix3d axes;
+  axes << c, across.row(0).transpose(), across.row(1).transpose();
+  return axes;
+}
+
+/// Generalised velocity (tip, v, ω): the tip along ĉ (and across it), the ball's linear and angular velocity.
 ImpactProblem makeImpactProblem(const CueStrike& s, const Eigen::Vector3d& n, const Eigen::Vector3d& c)
 {
+  const int tip = tipDofs(s);
+  const int dofs = tip + 6;
   const double inertia = 0.4 * s.ball_mass * s.ball_radius * s.ball_radius;
   ImpactProblem problem;
-  problem.mass_matrix = Eigen::MatrixXd::Zero(7, 7);
-  problem.mass_matrix.diagonal() << s.cue_mass, s.ball_mass, s.ball_mass, s.ball_mass, inertia, inertia, inertia;
-  problem.velocity = Eigen::VectorXd::Zero(7);
+  problem.mass_matrix = Eigen::MatrixXd::Zero(dofs, dofs);
+  problem.mass_matrix(0, 0) = s.cue_mass;
+  if (tip == 3)
+    problem.mass_matrix.diagonal().segment<2>(1).setConstant(s.cue_end_mass);
+  problem.mass_matrix.diagonal().tail<6>() << s.ball_mass, s.ball_mass, s.ball_mass, inertia, inertia, inertia;
+  problem.velocity = Eigen::VectorXd::Zero(dofs);
   problem.velocity(0) = s.cue_speed;
 
-  // Cue–ball: A = cue, B = ball at r n̂, so w = (d·ĉ) v_c − d·(v + ω × r n̂).
+  // Cue–ball: A = the tip, B = the ball at r n̂, so w = d·(tip velocity) − d·(v + ω × r n̂).
   const Eigen::Matrix3d cue_frame = contactFrame(n);
-  Eigen::MatrixXd cue_rows = Eigen::MatrixXd::Zero(3, 7);
-  cue_rows.col(0) = cue_frame * c;
+  Eigen::MatrixXd cue_rows = Eigen::MatrixXd::Zero(3, dofs);
+  cue_rows.leftCols(tip) = cue_frame * tipAxes(c).leftCols(tip);
   cue_rows.rightCols(6) = -pointVelocityRows(cue_frame, s.ball_radius * n);
   problem.contacts.push_back(makeContact("cue-ball", cue_rows, contactLaw(s.cue_contact, 1.0)));
 
   // Ball–table: A = ball at −r ẑ, B = table, table axes as the contact frame.
-  Eigen::MatrixXd table_rows = Eigen::MatrixXd::Zero(3, 7);
+  Eigen::MatrixXd table_rows = Eigen::MatrixXd::Zero(3, dofs);
   table_rows.rightCols(6) = pointVelocityRows(Eigen::Matrix3d::Identity(), -s.ball_radius * Eigen::Vector3d::UnitZ());
   problem.contacts.push_back(makeContact("ball-table", table_rows, contactLaw(s.table_contact, s.stiffness_ratio)));
   return problem;
@@ -63,12 +78,16 @@ Eigen::Vector3d worldImpulse(const ContactImpulse& impulse, const Eigen::Matrix3
 {
   return frame.transpose() * Eigen::Vector3d(impulse.tangential.x(), impulse.tangential.y(), impulse.normal);
 }
+
+/// Upward speed, relative to the ball's speed, below which the ball is taken to stay on the cloth (round-off).
+constexpr double LEAVES_CLOTH_TOLERANCE = 1e-9;
 }  // namespace
 
 CueStrike paperMasseStrike(const Eigen::Vector3d& cue_direction)
 {
   CueStrike s;
   s.cue_mass = 0.5018;
+  s.cue_end_mass = CUE_HELD_ON_AXIS;
   s.cue_direction = cue_direction;
   s.cue_speed = 3.089095;
   s.ball_mass = 0.17;
@@ -96,8 +115,13 @@ Expected<Eigen::Vector3d> hitNormal(const Eigen::Vector3d& axis_point, const Eig
     return Error{ErrorCode::InvalidShot, "cue_pose",
                  "the cue axis misses the ball (closest approach " +
                      std::to_string(std::sqrt(offset.squaredNorm() - b * b)) + " m from its centre)"};
+  // The tip may touch the ball or be slightly into it from round-off (a hundredth of the radius).
+  const double depth = ball_radius - offset.norm();
+  if (depth > 0.01 * ball_radius)
+    return Error{ErrorCode::InvalidShot, "cue_pose",
+                 "the cue tip is inside the ball (" + std::to_string(offset.norm()) + " m from its centre, radius " +
+                     std::to_string(ball_radius) + " m)"};
   const double distance = -b - std::sqrt(discriminant);
-  // The tip may touch the ball (distance 0) or be slightly into it from round-off, never behind it.
   if (distance < -0.01 * ball_radius)
     return Error{ErrorCode::InvalidShot, "cue_pose", "the ball is behind the cue tip (the cue points away)"};
   return Eigen::Vector3d((axis_point + distance * c - ball_centre) / ball_radius);
@@ -109,7 +133,7 @@ Expected<ImpactProblem> makeImpactProblem(const CueStrike& strike)
     return status.error();
   const Eigen::Vector3d n = strike.hit_normal.normalized();
   const Eigen::Vector3d c = strike.cue_direction.normalized();
-  if (Status status = checkGeometry(n, c); !status)
+  if (Status status = checkApproach(n, c); !status)
     return status.error();
   return makeImpactProblem(strike, n, c);
 }
@@ -127,15 +151,18 @@ Expected<CueStrikeResult> solve(const CueStrike& strike, const SolverOptions& op
   CueStrikeResult result;
   result.impact = std::move(solved).value();
   const Eigen::VectorXd& u = result.impact.velocity;
+  const int tip = tipDofs(strike);
   result.cue_velocity = u(0);
-  result.velocity = u.segment<3>(1);
-  result.angular_velocity = u.segment<3>(4);
+  result.tip_velocity = tipAxes(c).leftCols(tip) * u.head(tip);
+  result.velocity = u.segment<3>(tip);
+  result.angular_velocity = u.segment<3>(tip + 3);
   result.hit_normal = n;
   result.cue_direction = c;
   result.impulse_cue = worldImpulse(result.impact.impulses[0], contactFrame(n));
   result.impulse_table = worldImpulse(result.impact.impulses[1], Eigen::Matrix3d::Identity());
   result.states = ballBallTableStates(result.impact);
   result.miscue = result.impact.initially_slipping[0];
+  result.leaves_cloth = result.velocity.z() > LEAVES_CLOTH_TOLERANCE * result.velocity.norm();
   return result;
 }
 

@@ -18,10 +18,11 @@ Error withParameterName(Error error)
 
 Status validate(const ShotConfiguration& c)
 {
-  Status status = firstError({requirePositive(c.cue_mass, "cue_mass"), requirePositive(c.ball_mass, "ball_mass"),
-                              requirePositive(c.ball_radius, "ball_radius"), validate(c.cue_contact, "cue_contact"),
-                              requirePositive(c.stiffness_ratio, "stiffness_ratio"), validate(c.table, "table"),
-                              validate(c.motion), validate(c.solver, "solver")});
+  Status status =
+      firstError({requirePositive(c.cue_mass, "cue_mass"), requirePositiveOrInfinite(c.cue_end_mass, "cue_end_mass"),
+                  requirePositive(c.ball_mass, "ball_mass"), requirePositive(c.ball_radius, "ball_radius"),
+                  validate(c.cue_contact, "cue_contact"), requirePositive(c.stiffness_ratio, "stiffness_ratio"),
+                  validate(c.table, "table"), validate(c.motion), validate(c.solver, "solver")});
   if (!status)
     return withParameterName(status.error());
   if (!(c.table.cushion_height > 0.0 && c.table.cushion_height < 2.0 * c.ball_radius))
@@ -32,6 +33,7 @@ Status validate(const ShotConfiguration& c)
 std::vector<NamedParameter> numericParameters(ShotConfiguration& c)
 {
   return {{"cue_mass", &c.cue_mass},
+          {"cue_end_mass", &c.cue_end_mass},
           {"ball_mass", &c.ball_mass},
           {"ball_radius", &c.ball_radius},
           {"cue_contact/restitution", &c.cue_contact.restitution},
@@ -85,8 +87,17 @@ Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfigurati
   auto normal = hitNormal(cue.tip, cue.direction, centre, c.ball_radius);
   if (!normal)
     return normal.error();
-  CueStrike strike{c.cue_mass,     cue.direction, cue.speed,     c.ball_mass,      c.ball_radius,
-                   normal.value(), c.cue_contact, c.table.cloth, c.stiffness_ratio};
+  CueStrike strike;
+  strike.cue_mass = c.cue_mass;
+  strike.cue_end_mass = c.cue_end_mass;
+  strike.cue_direction = cue.direction;
+  strike.cue_speed = cue.speed;
+  strike.ball_mass = c.ball_mass;
+  strike.ball_radius = c.ball_radius;
+  strike.hit_normal = normal.value();
+  strike.cue_contact = c.cue_contact;
+  strike.table_contact = c.table.cloth;
+  strike.stiffness_ratio = c.stiffness_ratio;
   auto struck = solve(strike, c.solver);
   if (!struck)
     return struck.error();

@@ -24,6 +24,14 @@ inline Status requirePositive(double value, const std::string& field)
   return {};
 }
 
+/// A mass that may be infinite (a body held in place): > 0, not NaN.
+inline Status requirePositiveOrInfinite(double value, const std::string& field)
+{
+  if (std::isnan(value) || value <= 0.0)
+    return invalidArgument(field, "must be > 0 (or infinite), got " + std::to_string(value));
+  return {};
+}
+
 inline Status requireNonNegative(double value, const std::string& field)
 {
   if (!std::isfinite(value) || value < 0.0)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -12,14 +13,27 @@
 
 namespace billiard_shot_planner
 {
-/// The integrated billiard shot (paper §8): the cue strikes the ball at rest on the table, and the cue–ball and
-/// ball–table impacts happen at once, each compliant with friction. Table frame, z up, SI units.
+/// A cue tip's effective mass across the cue's axis that holds it on the axis: the paper's shooter, whose cue ran
+/// in ball bearings (§9.1, eq. 48).
+constexpr double CUE_HELD_ON_AXIS = std::numeric_limits<double>::infinity();
+
+/// A hand-held (or robot-held) cue's end mass: the part of the shaft behind the tip that moves sideways with it
+/// during the strike. Pooltool's default, the ball's mass over 30 (0.17 / 30 kg); Shepard and Alciatore measure
+/// 4–10 g for common shafts, less for "low-squirt" ones.
+constexpr double TYPICAL_CUE_END_MASS = 0.0057;
+
+/// The integrated billiard shot (paper §8): the cue strikes the ball at rest on the table. Table frame, z up, SI
+/// units.
 ///
-/// The cue is a body of mass cue_mass constrained to move along its axis ĉ (eq. 48). Contact p (cue–ball) has the
-/// ball's outward normal n̂ at the hit point; contact q (ball–table) has normal ẑ.
+/// The cue tip moves along the cue's axis ĉ with the cue's mass and across it with its end mass, as degrees of
+/// freedom of the same impact problem (an infinite end mass holds it on its axis, eq. 48). Contact p (cue–ball) has
+/// the ball's outward normal n̂ at the hit point; contact q (ball–table) has normal ẑ and touches at rest: it takes
+/// part only if the strike presses the ball into the cloth (a draw shot lifts it, a level hit through the centre
+/// only slides it).
 struct CueStrike
 {
-  double cue_mass = 0.5;
+  double cue_mass = 0.5;                       ///< kg, > 0: what moves with the tip along the cue's axis
+  double cue_end_mass = TYPICAL_CUE_END_MASS;  ///< kg, > 0 or CUE_HELD_ON_AXIS: the tip's mass across the axis
   Eigen::Vector3d cue_direction = -Eigen::Vector3d::UnitZ();  ///< ĉ, the cue's direction of motion (normalised)
   double cue_speed = 1.0;                                     ///< m/s, > 0
   double ball_mass = 0.17;
@@ -30,12 +44,13 @@ struct CueStrike
   double stiffness_ratio = 1.0;                           ///< k_table / k_cue
 };
 
-/// The massé shot of the paper's §9.2 with the errata's ball (m = 0.17 kg, r = 0.0286 m; see README) and the
-/// printed cue speed; `cue_direction` defaults to the literal reading of the text.
+/// The massé shot of the paper's §9.2 with the corrected ball (m = 0.17 kg, r = 0.0286 m; see docs) and the
+/// printed cue speed, the cue held on its axis; `cue_direction` defaults to the literal reading of the text.
 CueStrike paperMasseStrike(const Eigen::Vector3d& cue_direction = Eigen::Vector3d(-0.2761, -0.1388, -0.9511));
 
 /// The hit normal where the cue axis (through `axis_point`, along `direction`) first meets the ball: ray–sphere
-/// intersection. Errors (InvalidShot) when the axis misses the ball or the ball is behind the cue.
+/// intersection. Errors (InvalidShot) when the axis misses the ball, the tip is inside the ball, or the ball is behind
+/// the tip.
 Expected<Eigen::Vector3d> hitNormal(const Eigen::Vector3d& axis_point, const Eigen::Vector3d& direction,
                                     const Eigen::Vector3d& ball_centre, double ball_radius);
 
@@ -44,6 +59,7 @@ struct CueStrikeResult
   Eigen::Vector3d velocity;          ///< ball, m/s
   Eigen::Vector3d angular_velocity;  ///< ball, rad/s
   double cue_velocity = 0.0;         ///< cue after the shot, along ĉ
+  Eigen::Vector3d tip_velocity;      ///< the cue tip after the shot (along ĉ and across it), m/s
   Eigen::Vector3d impulse_cue;       ///< impulse on the cue at the hit point (N·s)
   Eigen::Vector3d impulse_table;     ///< impulse on the ball at the table contact (N·s)
   Eigen::Vector3d hit_normal;        ///< n̂ used (normalised)
@@ -51,16 +67,19 @@ struct CueStrikeResult
   std::vector<std::string> states;   ///< S1 (both), S2 (ball–table only), S3 (cue–ball only), S4 (end)
   /// The tip slipped on the ball from the first instant (|v_t| > μη²|v_n|): a miscue warning.
   bool miscue = false;
+  /// The ball leaves the cloth upwards (a jump, a massé or a scoop): its motion starts airborne.
+  bool leaves_cloth = false;
   ImpactResult impact;  ///< the engine's full result: contact 0 is cue–ball, contact 1 is ball–table
 };
 
-/// The engine's configuration for this strike: generalised velocity (v_c, v, ω), contact 0 cue–ball, contact 1
+/// The engine's configuration for this strike: generalised velocity (v_c, [v_⊥1, v_⊥2,] v, ω) — the tip along ĉ,
+/// across it when the end mass is finite, the ball's linear and angular velocity — contact 0 cue–ball, contact 1
 /// ball–table. Errors as solve().
 Expected<ImpactProblem> makeImpactProblem(const CueStrike& strike);
 
-/// Solves the strike with the multiple-impact engine. Errors: InvalidArgument (a field, named), InvalidShot
-/// (n̂·ĉ ≥ 0: the cue does not approach; the hit point below the equator, or on it with ĉ·ẑ ≥ 0, which the model
-/// of §8 does not cover).
+/// Solves the strike with the multiple-impact engine: any hit the tip can make, above, on or below the ball's
+/// equator, level or steep. Errors: InvalidArgument (a field, named: cue_end_mass must be > 0 or infinite),
+/// InvalidShot (n̂·ĉ ≥ 0: the cue does not approach the ball at the hit point).
 Expected<CueStrikeResult> solve(const CueStrike& strike, const SolverOptions& options = {});
 
 }  // namespace billiard_shot_planner

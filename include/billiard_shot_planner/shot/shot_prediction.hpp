@@ -11,13 +11,16 @@
 namespace billiard_shot_planner
 {
 /// Everything physical about a shot except where the cue is and how fast it moves: the cue, the ball, the table
-/// and the motion model. Defaults: the paper's massé set-up (§9.2) with the errata's ball (0.17 kg, 0.0286 m).
+/// and the motion model. Defaults (config/default.yaml): the paper's set-up (§9.2) with the corrected ball
+/// (0.17 kg, 0.0286 m) and a hand-held cue: its tip free to move across the axis with a typical end mass, and
+/// Mindlin's tangential stiffness (η² = 1.2) instead of the paper's fitted 7 (see docs/cue_strike.md).
 struct ShotConfiguration
 {
-  double cue_mass = 0.5018;                        ///< kg, cue (and whatever moves with it)
+  double cue_mass = 0.5018;                        ///< kg, cue (and whatever moves with it) along its axis
+  double cue_end_mass = TYPICAL_CUE_END_MASS;      ///< kg, the tip across the axis; CUE_HELD_ON_AXIS: the paper's
   double ball_mass = 0.17;                         ///< kg
   double ball_radius = 0.0286;                     ///< m
-  SurfaceContact cue_contact{0.656532, 0.7, 7.0};  ///< cue tip on ball: e, μ, η²
+  SurfaceContact cue_contact{0.656532, 0.7, 1.2};  ///< cue tip on ball: e, μ, η² (Mindlin's η² for a soft tip)
   double stiffness_ratio = 0.8;                    ///< k_cloth / k_cue
   Table table;                                     ///< includes the cloth contact (e, μ, η²) of the strike
   MotionParameters motion;
@@ -34,7 +37,7 @@ struct NamedParameter
   double* value;
 };
 
-/// Every numeric parameter of the configuration, by name: cue_mass, ball_mass, ball_radius,
+/// Every numeric parameter of the configuration, by name: cue_mass, cue_end_mass, ball_mass, ball_radius,
 /// cue_contact/{restitution,friction,eta2}, stiffness_ratio, table/{length,width,cushion_height,
 /// cushion_stiffness_ratio}, table/cloth/…, table/cushion/…, motion/{gravity,sliding_friction,rolling_friction,
 /// spinning_friction,min_bounce_speed,max_time}, solver/{relative_tolerance,absolute_tolerance}.
