@@ -1,5 +1,8 @@
+#include <cmath>
+
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
+#include "billiard_shot_planner/scenarios/cue_stroke.hpp"
 #include "json_fields.hpp"
 
 namespace billiard_shot_planner
@@ -44,6 +47,74 @@ Expected<Eigen::Vector3d> hitNormalField(const json& request, const CueStrike& s
   return hitNormal(point.value(), strike.cue_direction, centre.value(), strike.ball_radius);
 }
 
+/// "cue_end_mass": kg, or "inf" for a tip held on the cue's axis (the paper's shooter); the strike's default when
+/// absent.
+Status readEndMass(const json& request, CueStrike& strike)
+{
+  if (request.contains("cue_end_mass") && request.at("cue_end_mass") == "inf")
+  {
+    strike.cue_end_mass = CUE_HELD_ON_AXIS;
+    return {};
+  }
+  auto mass = number(request, "cue_end_mass", strike.cue_end_mass);
+  if (!mass)
+    return invalidArgument("cue_end_mass", "must be a number of kg or \"inf\"");
+  strike.cue_end_mass = mass.value();
+  return {};
+}
+
+/// The cue as a stroke, "cue": {"phi_deg", "theta_deg", "speed", "a", "b"}, in place of cue_direction, cue_speed
+/// and the hit point.
+Status readStroke(const json& request, CueStrike& strike)
+{
+  for (const char* key : {"cue_direction", "cue_speed", "hit_normal", "cue_axis_point", "ball_centre"})
+    if (request.contains(key))
+      return invalidArgument(key,
+                             "give the cue either as \"cue\" or by cue_direction, cue_speed and the hit point, "
+                             "not both");
+  auto fields = object(request, "cue", true);
+  if (!fields)
+    return fields.error();
+  CueStroke stroke;
+  double phi_deg = 0.0, theta_deg = 0.0;
+  if (Status status =
+          readNumbers(fields.value(), {{"phi_deg", &phi_deg}, {"speed", &strike.cue_speed}}, "cue", Presence::Required);
+      !status)
+    return status;
+  if (Status status =
+          readNumbers(fields.value(), {{"theta_deg", &theta_deg}, {"a", &stroke.a}, {"b", &stroke.b}}, "cue");
+      !status)
+    return status;
+  stroke.phi = phi_deg * M_PI / 180.0;
+  stroke.theta = theta_deg * M_PI / 180.0;
+  auto geometry = strokeGeometry(stroke);
+  if (!geometry)
+  {
+    Error error = nested("cue", geometry.error());
+    if (error.field == "cue.phi" || error.field == "cue.theta")
+      error.field += "_deg";
+    return error;
+  }
+  strike.cue_direction = geometry.value().cue_direction;
+  strike.hit_normal = geometry.value().hit_normal;
+  return {};
+}
+
+/// The cue by its direction, its speed and the hit point (as a normal, or where the cue's axis meets the ball).
+Status readCueAndHitPoint(const json& request, CueStrike& strike)
+{
+  if (Status status = readNumbers(request, {{"cue_speed", &strike.cue_speed}}, "", Presence::Required); !status)
+    return status;
+  auto direction = vector3(request, "cue_direction");
+  if (!direction)
+    return direction.error();
+  strike.cue_direction = direction.value();
+  auto normal = hitNormalField(request, strike);
+  if (!normal)
+    return normal.error();
+  strike.hit_normal = normal.value();
+  return {};
+}
 }  // namespace
 
 Expected<CueStrike> cueStrikeFromJson(const json& request)
@@ -51,17 +122,14 @@ Expected<CueStrike> cueStrikeFromJson(const json& request)
   CueStrike strike;
   if (Status status = readNumbers(request,
                                   {{"cue_mass", &strike.cue_mass},
-                                   {"cue_speed", &strike.cue_speed},
                                    {"ball_mass", &strike.ball_mass},
                                    {"ball_radius", &strike.ball_radius},
                                    {"stiffness_ratio", &strike.stiffness_ratio}},
                                   "", Presence::Required);
       !status)
     return status.error();
-  auto direction = vector3(request, "cue_direction");
-  if (!direction)
-    return direction.error();
-  strike.cue_direction = direction.value();
+  if (Status status = readEndMass(request, strike); !status)
+    return status.error();
   for (auto [name, target] :
        {std::pair{"cue_contact", &strike.cue_contact}, std::pair{"table_contact", &strike.table_contact}})
   {
@@ -70,10 +138,9 @@ Expected<CueStrike> cueStrikeFromJson(const json& request)
       return surface.error();
     *target = surface.value();
   }
-  auto normal = hitNormalField(request, strike);
-  if (!normal)
-    return normal.error();
-  strike.hit_normal = normal.value();
+  Status cue = request.contains("cue") ? readStroke(request, strike) : readCueAndHitPoint(request, strike);
+  if (!cue)
+    return cue.error();
   return strike;
 }
 
@@ -83,11 +150,14 @@ json cueStrikeJson(const CueStrikeResult& r)
   out["v"] = toVector(r.velocity);
   out["omega"] = toVector(r.angular_velocity);
   out["cue_velocity"] = r.cue_velocity;
+  out["tip_velocity"] = toVector(r.tip_velocity);
   out["states"] = r.states;
   out["impulse_cue"] = toVector(r.impulse_cue);
   out["impulse_table"] = toVector(r.impulse_table);
   out["hit_normal"] = toVector(r.hit_normal);
+  out["cue_direction"] = toVector(r.cue_direction);
   out["miscue"] = r.miscue;
+  out["leaves_cloth"] = r.leaves_cloth;
   return out;
 }
 

@@ -92,7 +92,8 @@ TEST(ImpactSolve, CueStrikeFromTheIssue)
           "cue_speed": 3.089095, "ball_mass": 0.1701, "ball_radius": 0.0286,
           "hit_normal": [0.480151, -0.102889, 0.871131],
           "cue_contact": {"restitution": 0.656532, "friction": 0.7, "eta2": 7},
-          "table_contact": {"restitution": 0.51625, "friction": 0.152479, "eta2": 10}, "stiffness_ratio": 0.8})";
+          "table_contact": {"restitution": 0.51625, "friction": 0.152479, "eta2": 10}, "stiffness_ratio": 0.8,
+          "cue_end_mass": "inf"})";
   const SolverRun run = runSolver(shot);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto out = nlohmann::json::parse(run.output);
@@ -100,6 +101,7 @@ TEST(ImpactSolve, CueStrikeFromTheIssue)
   // The program answers what the library computes for the same strike.
   bsp::CueStrike strike;
   strike.cue_mass = 0.5018;
+  strike.cue_end_mass = bsp::CUE_HELD_ON_AXIS;
   strike.cue_direction = {0.2761, -0.1388, -0.9511};
   strike.cue_speed = 3.089095;
   strike.ball_mass = 0.1701;
@@ -125,8 +127,79 @@ TEST(ImpactSolve, CueStrikeFromTheIssue)
   EXPECT_EQ(out["impulse_table"].size(), 3u);
   EXPECT_TRUE(out["cue_velocity"].is_number());
   EXPECT_EQ(out["miscue"], false);
+  EXPECT_EQ(out["leaves_cloth"], true);
   EXPECT_FALSE(out["events"].empty());
   EXPECT_TRUE(out["events"][0].contains("contact_name"));
+  // The same strike with a hand-held cue's tip (the default end mass) is another strike.
+  auto held = nlohmann::json::parse(shot);
+  held.erase("cue_end_mass");
+  const SolverRun hand_held = runSolver(held.dump());
+  ASSERT_EQ(hand_held.exit_code, 0) << hand_held.output;
+  EXPECT_GT(std::abs(nlohmann::json::parse(hand_held.output)["v"][0].get<double>() - v[0]), 1e-3);
+}
+
+namespace
+{
+/// A level stroke of a hand-held cue given as {phi_deg, theta_deg, speed, a, b}.
+std::string stroke(const std::string& cue, const std::string& more = "")
+{
+  return R"({"problem": "cue_strike", "cue_mass": 0.54, "ball_mass": 0.17, "ball_radius": 0.028575,
+             "cue_contact": {"restitution": 0.75, "friction": 0.7, "eta2": 1.2},
+             "table_contact": {"restitution": 0.5, "friction": 0.2, "eta2": 10}, "stiffness_ratio": 0.8,
+             "cue": )" +
+         cue + more + "}";
+}
+}  // namespace
+
+TEST(ImpactSolve, CueStrikeAsAStroke)
+{
+  // Level through the centre: the central impact of cue and ball, v = (1 + e) M V / (M + m).
+  const SolverRun centre = runSolver(stroke(R"({"phi_deg": 90, "speed": 2})"));
+  ASSERT_EQ(centre.exit_code, 0) << centre.output;
+  const auto c = nlohmann::json::parse(centre.output);
+  EXPECT_NEAR(c["v"][1].get<double>(), 1.75 * 0.54 * 2 / (0.54 + 0.17), 1e-12);
+  EXPECT_NEAR(c["v"][0].get<double>(), 0.0, 1e-12);
+  EXPECT_EQ(c["states"], (std::vector<std::string>{"S3", "S4"}));
+  EXPECT_EQ(c["leaves_cloth"], false);
+  // Draw, 5° down, right english: backspin, counter-clockwise side spin, and the tip's velocity reported.
+  const SolverRun draw = runSolver(
+      stroke(R"({"phi_deg": 0, "theta_deg": 5, "speed": 2, "a": 0.2, "b": -0.3})", R"(, "cue_end_mass": 0.0057)"));
+  ASSERT_EQ(draw.exit_code, 0) << draw.output;
+  const auto d = nlohmann::json::parse(draw.output);
+  EXPECT_LT(d["omega"][1].get<double>(), 0.0);
+  EXPECT_GT(d["omega"][2].get<double>(), 0.0);
+  EXPECT_GT(d["v"][1].get<double>(), 0.0);  // squirt away from the english
+  EXPECT_EQ(d["tip_velocity"].size(), 3u);
+  // The same stroke as a whole shot: the strike, then the path on the table.
+  auto shot = nlohmann::json::parse(stroke(R"({"phi_deg": 0, "theta_deg": 5, "speed": 2, "a": 0.2, "b": -0.3})"));
+  shot["problem"] = "shot";
+  shot["ball_position"] = {-0.5, 0.0};
+  const SolverRun whole = runSolver(shot.dump());
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  const auto w = nlohmann::json::parse(whole.output);
+  EXPECT_EQ(w["strike"]["v"], d["v"]);
+  EXPECT_FALSE(w["trajectory"]["events"].empty());
+}
+
+TEST(ImpactSolve, BadStrokesExitWithTwoNamingTheField)
+{
+  const std::string cases[][2] = {
+      {stroke(R"({"phi_deg": 0, "speed": 2, "a": 0.8, "b": 0.7})"), "cue.a"},
+      {stroke(R"({"phi_deg": 0, "speed": 2, "theta_deg": 120})"), "cue.theta_deg"},
+      {stroke(R"({"phi_deg": 0, "speed": 2, "theta_deg": 80, "b": -0.5})"), "cannot reach"},
+      {stroke(R"({"speed": 2})"), "cue.phi_deg"},
+      {stroke(R"({"phi_deg": 0, "speed": -1})"), "cue_speed"},
+      {stroke(R"({"phi_deg": 0, "speed": 2})", R"(, "cue_direction": [1, 0, 0])"), "cue_direction"},
+      {stroke(R"({"phi_deg": 0, "speed": 2})", R"(, "cue_end_mass": -0.01)"), "cue_end_mass"},
+      {stroke(R"({"phi_deg": 0, "speed": 2})", R"(, "cue_end_mass": "heavy")"), "cue_end_mass"},
+      {stroke(R"("straight")"), "cue"},
+  };
+  for (const auto& c : cases)
+  {
+    const SolverRun run = runSolver(c[0]);
+    EXPECT_EQ(run.exit_code, 2) << c[0] << "\n" << run.output;
+    EXPECT_NE(run.output.find(c[1]), std::string::npos) << c[0] << "\n" << run.output;
+  }
 }
 
 TEST(ImpactSolve, CueStrikeFromTheCueAxis)
@@ -193,7 +266,7 @@ TEST(ImpactSolve, BallMotionAndShot)
           "ball_radius": 0.0286, "hit_normal": [0.480151, -0.102889, 0.871131],
           "cue_contact": {"restitution": 0.656532, "friction": 0.7, "eta2": 7},
           "table_contact": {"restitution": 0.51625, "friction": 0.152479, "eta2": 10}, "stiffness_ratio": 0.8,
-          "table_file": ")" +
+          "cue_end_mass": "inf", "table_file": ")" +
       std::string(CONFIG_DIR) + R"(/table_9ft.yaml"})");
   ASSERT_EQ(shot.exit_code, 0) << shot.output;
   const auto s = nlohmann::json::parse(shot.output);
