@@ -21,10 +21,12 @@ void fillStrike(ShotPrediction& m, const CueStrikeResult& strike, const Eigen::V
   m.hit_normal = toVector3(strike.hit_normal);
   m.cue_direction = toVector3(strike.cue_direction);
   m.cue_speed_after = strike.cue_velocity;
+  m.tip_velocity_after = toVector3(strike.tip_velocity);
   m.impulse_cue = toVector3(strike.impulse_cue);
   m.impulse_table = toVector3(strike.impulse_table);
   m.states = strike.states;
   m.miscue = strike.miscue;
+  m.leaves_cloth = strike.leaves_cloth;
   m.converged = strike.impact.converged;
   const char* names[] = {"cue-ball", "ball-table"};
   for (const ContactEvent& e : strike.impact.events)

@@ -9,6 +9,7 @@ template <class Visitor>
 void visitTunables(ShotConfiguration& c, ShotPredictorConfig& t, Visitor&& visit)
 {
   visit(t.cue_mass, c.cue_mass);
+  visit(t.cue_end_mass, c.cue_end_mass);
   visit(t.ball_mass, c.ball_mass);
   visit(t.ball_radius, c.ball_radius);
   visit(t.stiffness_ratio, c.stiffness_ratio);

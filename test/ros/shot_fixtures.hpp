@@ -18,6 +18,15 @@ inline billiard_shot_planner::CuePlacement masse()
   return cue;
 }
 
+/// The configuration of the paper's massé (§9.2): its shooter held the tip on the cue's axis, with its fitted tip.
+inline billiard_shot_planner::ShotConfiguration paperShooter()
+{
+  billiard_shot_planner::ShotConfiguration configuration;
+  configuration.cue_end_mass = billiard_shot_planner::CUE_HELD_ON_AXIS;
+  configuration.cue_contact.eta2 = 7.0;
+  return configuration;
+}
+
 inline billiard_shot_planner::CuePlacement follow()
 {
   billiard_shot_planner::CuePlacement cue;

@@ -15,7 +15,7 @@ namespace
 {
 visualization_msgs::MarkerArray masseMarkers()
 {
-  const bsp::ShotConfiguration configuration;
+  const bsp::ShotConfiguration configuration = shot_fixtures::paperShooter();
   const auto outcome = bsp::predictShot(shot_fixtures::masse(), configuration);
   EXPECT_TRUE(outcome.ok());
   return bsp::trajectoryMarkers(outcome.value(), configuration, "table", 0.01);

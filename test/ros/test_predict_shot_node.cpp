@@ -4,11 +4,13 @@
 #include <billiard_shot_planner/PredictShot.h>
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <gtest/gtest.h>
+
 #include <ros/ros.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
+#include <limits>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -142,6 +144,14 @@ TEST_F(PredictShotNode, BadInputIsAnsweredWithAReason)
       []
       {
         auto cue = shot_fixtures::follow();
+        cue.tip = Eigen::Vector3d(cue.ball.x(), cue.ball.y(), 0.0286) - 0.01 * cue.direction;
+        return cue;
+      }());
+  cases.push_back({"tip inside the ball", r, "inside the ball"});
+  r = toRequest(
+      []
+      {
+        auto cue = shot_fixtures::follow();
         cue.tip.y() += 0.2;
         return cue;
       }());
@@ -162,6 +172,10 @@ TEST_F(PredictShotNode, BadInputIsAnsweredWithAReason)
   r.override_names = {"cue_contact/friction"};
   r.override_values = {-0.5};
   cases.push_back({"bad override", r, "cue_contact/friction"});
+  r = base;
+  r.override_names = {"cue_end_mass"};
+  r.override_values = {std::nan("")};
+  cases.push_back({"NaN end mass", r, "cue_end_mass"});
   for (const Case& c : cases)
   {
     const auto response = call(c.request);
@@ -179,6 +193,29 @@ TEST_F(PredictShotNode, OverridesChangeThePrediction)
   const auto softer = call(request);
   ASSERT_TRUE(plain.success && softer.success);
   EXPECT_GT(std::abs(plain.ball_angular_velocity.y - softer.ball_angular_velocity.y), 1e-3);
+}
+
+TEST_F(PredictShotNode, EveryStrokeIsPredicted)
+{
+  // A level draw (the tip 0.4 radii below the centre) and the same stroke with the tip held on the cue's axis (an
+  // infinite end mass): both answered, backspin, and the held tip lifts the ball far more.
+  auto request = toRequest(
+      []
+      {
+        auto cue = shot_fixtures::follow();
+        cue.direction = Eigen::Vector3d::UnitX();
+        cue.tip = Eigen::Vector3d(cue.ball.x(), cue.ball.y(), 0.0286 - 0.4 * 0.0286) - 0.05 * cue.direction;
+        return cue;
+      }());
+  const auto draw = call(request);
+  request.override_names = {"cue_end_mass"};
+  request.override_values = {std::numeric_limits<double>::infinity()};
+  const auto held = call(request);
+  ASSERT_TRUE(draw.success && held.success) << draw.message << " / " << held.message;
+  EXPECT_LT(draw.ball_angular_velocity.y, 0.0);
+  EXPECT_EQ(draw.states.front(), "S3");  // the cloth is not pressed
+  EXPECT_TRUE(draw.prediction.leaves_cloth);
+  EXPECT_GT(held.ball_velocity.z, 5.0 * draw.ball_velocity.z);
 }
 
 TEST_F(PredictShotNode, RunTimeTuningChangesThePrediction)
@@ -199,7 +236,7 @@ TEST_F(PredictShotNode, RunTimeTuningChangesThePrediction)
   const auto expected = call(overridden);
   ASSERT_TRUE(tune(2.0));
   const auto tuned = call(request);
-  ASSERT_TRUE(tune(7.0));
+  ASSERT_TRUE(tune(1.2));  // back to config/default.yaml
   const auto restored = call(request);
   ASSERT_TRUE(expected.success && tuned.success && restored.success);
   EXPECT_EQ(tuned.ball_angular_velocity.y, expected.ball_angular_velocity.y);
