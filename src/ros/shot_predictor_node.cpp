@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/ros/prediction_message.hpp"
 #include "billiard_shot_planner/ros/trajectory_markers.hpp"
 #include "billiard_shot_planner/ros/tuning.hpp"
@@ -27,12 +28,17 @@ Status checkRequest(const PredictShot::Request& r)
     return invalidArgument("cue_pose.pose.orientation", "contains NaN or infinite values");
   const double norm = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
   if (std::abs(norm - 1.0) > QUATERNION_NORM_TOLERANCE)
-    return invalidArgument("cue_pose.pose.orientation", "is not a unit quaternion (norm " + std::to_string(norm) + ")");
+    return invalidArgument("cue_pose.pose.orientation", "is not a unit quaternion (norm " + formatNumber(norm) + ")");
   if (!std::isfinite(r.cue_speed) || r.cue_speed <= 0.0)
-    return invalidArgument("cue_speed", "must be > 0 m/s, got " + std::to_string(r.cue_speed));
+    return invalidArgument("cue_speed", "must be > 0 m/s, got " + formatNumber(r.cue_speed));
   const auto& b = r.ball_position.point;
   if (!std::isfinite(b.x) || !std::isfinite(b.y) || !std::isfinite(b.z))
     return invalidArgument("ball_position.point", "contains NaN or infinite values");
+  // An empty frame can never be resolved: refused at once rather than after the whole tf timeout.
+  if (r.cue_pose.header.frame_id.empty())
+    return invalidArgument("cue_pose.header.frame_id", "is empty: give the frame the pose is expressed in");
+  if (r.ball_position.header.frame_id.empty())
+    return invalidArgument("ball_position.header.frame_id", "is empty: give the frame the point is expressed in");
   if (r.override_names.size() != r.override_values.size())
     return invalidArgument("override_values", "must have one value per name in override_names");
   return {};
@@ -49,8 +55,8 @@ ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& pri
   prediction_publisher_ = private_node.advertise<ShotPrediction>("prediction", 10);
   marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("trajectory_markers", 1, true);
   // The tuning server starts from the loaded parameters, not from the .cfg defaults.
-  tuning_server_ =
-      std::make_unique<dynamic_reconfigure::Server<ShotPredictorConfig>>(ros::NodeHandle(private_node, "tuning"));
+  tuning_server_ = std::make_unique<dynamic_reconfigure::Server<ShotPredictorConfig>>(
+      tuning_mutex_, ros::NodeHandle(private_node, "tuning"));
   tuning_server_->updateConfig(toTuning(settings_.shot));
   tuning_server_->setCallback([this](ShotPredictorConfig& tuning, uint32_t level) { retune(tuning, level); });
   service_ = private_node.advertiseService("predict_shot", &ShotPredictorNode::predict, this);
@@ -63,10 +69,14 @@ void ShotPredictorNode::retune(ShotPredictorConfig& tuning, uint32_t /*level*/)
   auto tuned = applyTuning(settings_.shot, tuning);
   if (!tuned)
   {
-    ROS_ERROR("tuning rejected, parameters unchanged: %s", tuned.error().describe().c_str());
+    // The server keeps and answers what the callback leaves in `tuning`: the node's configuration, unchanged.
+    tuning = toTuning(settings_.shot);
+    tuning.rejected = tuned.error().describe();
+    ROS_WARN("tuning rejected, parameters unchanged: %s", tuning.rejected.c_str());
     return;
   }
   settings_.shot = tuned.value();
+  tuning.rejected.clear();
 }
 
 Expected<ShotConfiguration> ShotPredictorNode::configurationFor(const PredictShot::Request& request) const

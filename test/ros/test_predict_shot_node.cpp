@@ -11,6 +11,7 @@
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 #include <limits>
+#include <optional>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -169,6 +170,9 @@ TEST_F(PredictShotNode, BadInputIsAnsweredWithAReason)
   r.cue_pose.header.frame_id = "no_such_frame";
   cases.push_back({"unknown frame", r, "cue_pose.header.frame_id"});
   r = base;
+  r.ball_position.header.frame_id = "";
+  cases.push_back({"empty frame", r, "ball_position.header.frame_id"});
+  r = base;
   r.override_names = {"cue_contact/friction"};
   r.override_values = {-0.5};
   cases.push_back({"bad override", r, "cue_contact/friction"});
@@ -216,6 +220,69 @@ TEST_F(PredictShotNode, EveryStrokeIsPredicted)
   EXPECT_EQ(draw.states.front(), "S3");  // the cloth is not pressed
   EXPECT_TRUE(draw.prediction.leaves_cloth);
   EXPECT_GT(held.ball_velocity.z, 5.0 * draw.ball_velocity.z);
+}
+
+namespace
+{
+/// Sets one double through ~tuning; the server's answer (its configuration after the change).
+dynamic_reconfigure::Config tuneDouble(const std::string& name, double value)
+{
+  dynamic_reconfigure::Reconfigure srv;
+  dynamic_reconfigure::DoubleParameter parameter;
+  parameter.name = name;
+  parameter.value = value;
+  srv.request.config.doubles.push_back(parameter);
+  EXPECT_TRUE(ros::service::call("/shot_predictor/tuning/set_parameters", srv));
+  return srv.response.config;
+}
+
+std::optional<double> doubleIn(const dynamic_reconfigure::Config& config, const std::string& name)
+{
+  for (const auto& parameter : config.doubles)
+    if (parameter.name == name)
+      return parameter.value;
+  return std::nullopt;
+}
+
+std::string rejectedIn(const dynamic_reconfigure::Config& config)
+{
+  for (const auto& parameter : config.strs)
+    if (parameter.name == "rejected")
+      return parameter.value;
+  return "<missing>";
+}
+}  // namespace
+
+TEST_F(PredictShotNode, RunTimeTuningRejectsBadValuesWithTheReasonAndStaysUsable)
+{
+  const auto request = toRequest(shot_fixtures::masse());
+  const auto before = call(request);
+  // Out of range and NaN: rejected whole, never clamped; the answer is the node's unchanged configuration.
+  struct Bad
+  {
+    const char* name;
+    double value;
+    const char* field;  // as the reason names it: the node's parameter name
+  };
+  for (const Bad& bad :
+       {Bad{"cue_mass", -5.0, "cue_mass"}, Bad{"ball_radius", 0.001, "table/cushion_height"},
+        Bad{"cloth_restitution", 1.5, "table/cloth/restitution"}, Bad{"cue_end_mass", std::nan(""), "cue_end_mass"}})
+  {
+    const std::string name = bad.name;
+    const auto answer = tuneDouble(name, bad.value);
+    EXPECT_NE(rejectedIn(answer).find(bad.field), std::string::npos) << name << ": " << rejectedIn(answer);
+    const auto after = call(request);
+    ASSERT_TRUE(after.success) << after.message;
+    EXPECT_EQ(after.ball_angular_velocity.y, before.ball_angular_velocity.y) << name;
+  }
+  EXPECT_EQ(doubleIn(tuneDouble("ball_radius", 0.001), "ball_radius"), 0.0286);
+  // A valid change after the rejections is applied (no stuck server), and so is the restore.
+  const auto applied = tuneDouble("cue_contact_friction", 0.5);
+  EXPECT_EQ(rejectedIn(applied), "");
+  EXPECT_EQ(doubleIn(applied, "cue_contact_friction"), 0.5);
+  EXPECT_NE(call(request).ball_angular_velocity.y, before.ball_angular_velocity.y);
+  EXPECT_EQ(rejectedIn(tuneDouble("cue_contact_friction", 0.7)), "");
+  EXPECT_EQ(call(request).ball_angular_velocity.y, before.ball_angular_velocity.y);
 }
 
 TEST_F(PredictShotNode, RunTimeTuningChangesThePrediction)

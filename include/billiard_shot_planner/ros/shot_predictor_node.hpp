@@ -6,6 +6,7 @@
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
+#include <boost/thread/recursive_mutex.hpp>
 
 #include <memory>
 #include <mutex>
@@ -30,10 +31,14 @@ private:
   bool predict(PredictShot::Request& request, PredictShot::Response& response);
   Expected<CuePlacement> placeCue(const PredictShot::Request& request) const;
   Expected<ShotConfiguration> configurationFor(const PredictShot::Request& request) const;
+  /// A change through ~tuning: applied whole, or rejected whole with `tuning` reset to the node's configuration and
+  /// the reason in tuning.rejected (the server answers the client with it).
   void retune(ShotPredictorConfig& tuning, uint32_t level);
 
   NodeSettings settings_;
   mutable std::mutex configuration_mutex_;  ///< guards settings_.shot against run-time tuning
+  /// The tuning server's own lock, shared with it so that updateConfig() may be called without deadlock.
+  boost::recursive_mutex tuning_mutex_;
   std::unique_ptr<dynamic_reconfigure::Server<ShotPredictorConfig>> tuning_server_;
   tf2_ros::Buffer buffer_;
   tf2_ros::TransformListener listener_{buffer_};
