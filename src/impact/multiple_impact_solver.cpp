@@ -739,7 +739,11 @@ Expected<ImpactResult> solveMultipleImpact(const ImpactProblem& problem, const S
     return status.error();
   try
   {
-    return detail::ImpactSolver(problem, options).run();
+    auto result = detail::ImpactSolver(problem, options).run();
+    // An answer never carries NaN or infinity: a failure the checks above did not foresee is reported as one.
+    if (result && !(result.value().velocity.allFinite() && std::isfinite(result.value().final_kinetic_energy)))
+      return Error{ErrorCode::NumericalFailure, "", "numerical failure: the final velocities are not finite"};
+    return result;
   }
   catch (const std::exception& e)
   {

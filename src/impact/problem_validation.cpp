@@ -2,6 +2,7 @@
 #include <cmath>
 #include <string>
 
+#include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/impact/impact_problem.hpp"
 
 namespace billiard_shot_planner
@@ -31,19 +32,22 @@ Status validateMassMatrix(const ImpactProblem& problem)
     return invalidArgument("velocity", "must have as many entries as the mass matrix has rows");
   if (!allFinite(problem.velocity))
     return invalidArgument("velocity", "contains NaN or infinite entries");
+  // Finite but huge entries (1e308 m/s) overflow the energy, and every answer derived from it, into infinity.
+  if (!std::isfinite(problem.velocity.dot(mass * problem.velocity)))
+    return invalidArgument("velocity", "its kinetic energy overflows: the speeds or masses are beyond double range");
   return {};
 }
 
 Status validateLaw(const ContactLaw& law, const std::string& field)
 {
   if (!std::isfinite(law.restitution) || law.restitution < 0.0 || law.restitution > 1.0)
-    return invalidArgument(field + ".restitution", "must be in [0, 1], got " + std::to_string(law.restitution));
+    return invalidArgument(field + ".restitution", "must be in [0, 1], got " + formatNumber(law.restitution));
   if (!std::isfinite(law.stiffness) || law.stiffness <= 0.0)
-    return invalidArgument(field + ".stiffness", "must be finite and > 0, got " + std::to_string(law.stiffness));
+    return invalidArgument(field + ".stiffness", "must be finite and > 0, got " + formatNumber(law.stiffness));
   if (!std::isfinite(law.friction) || law.friction < 0.0)
-    return invalidArgument(field + ".friction", "must be finite and >= 0, got " + std::to_string(law.friction));
+    return invalidArgument(field + ".friction", "must be finite and >= 0, got " + formatNumber(law.friction));
   if (law.friction > 0.0 && (!std::isfinite(law.eta2) || law.eta2 <= 0.0))
-    return invalidArgument(field + ".eta2", "must be finite and > 0, got " + std::to_string(law.eta2));
+    return invalidArgument(field + ".eta2", "must be finite and > 0, got " + formatNumber(law.eta2));
   return {};
 }
 

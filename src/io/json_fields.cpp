@@ -49,10 +49,11 @@ Expected<SolverOptions> solverOptions(const json& request)
     auto value = number(solver, key, *target);
     if (!value)
       return invalidArgument(std::string("solver.") + key, value.error().message);
-    if (!(value.value() > 0.0 && value.value() < 1e-2))
-      return invalidArgument(std::string("solver.") + key, "must be in (0, 0.01)");
     *target = value.value();
   }
+  // Ranges: validate(SolverOptions), which names the field ("solver.absolute_tolerance").
+  if (Status status = validate(options, "solver"); !status)
+    return status.error();
   auto max_events = number(solver, "max_events", static_cast<double>(options.max_events));
   if (!max_events || !(max_events.value() >= 1.0 && max_events.value() <= 1e9))
     return invalidArgument("solver.max_events", "must be a number in [1, 1e9]");

@@ -1,5 +1,7 @@
 #include "billiard_shot_planner/io/json_problems.hpp"
 
+#include <cmath>
+#include <optional>
 #include <string>
 
 #include "json_fields.hpp"
@@ -16,6 +18,32 @@ const std::pair<const char*, Solver> PROBLEMS[] = {
     {"cue_strike", json_io::solveCueStrike},          {"ball_table", json_io::solveBallTable},
     {"ball_motion", json_io::solveBallMotion},        {"shot", json_io::solveShot},
 };
+
+/// The path of the first number in `value` that is NaN or infinite (JSON would write it as null), if any.
+std::optional<std::string> nonFinitePath(const json& value, const std::string& path)
+{
+  if (value.is_number_float() && !std::isfinite(value.get<double>()))
+    return path.empty() ? "answer" : path;
+  if (value.is_object())
+    for (const auto& [key, item] : value.items())
+      if (auto found = nonFinitePath(item, path.empty() ? key : path + "." + key))
+        return found;
+  if (value.is_array())
+    for (std::size_t i = 0; i < value.size(); ++i)
+      if (auto found = nonFinitePath(value[i], path + "[" + std::to_string(i) + "]"))
+        return found;
+  return std::nullopt;
+}
+
+/// An answer never carries NaN or infinity: one that would is a numerical failure, named where it happened.
+Expected<json> finiteAnswer(Expected<json> answer)
+{
+  if (!answer)
+    return answer;
+  if (auto path = nonFinitePath(answer.value(), ""))
+    return Error{ErrorCode::NumericalFailure, *path, "the answer is not finite here (a numerical failure)"};
+  return answer;
+}
 
 std::string knownProblems()
 {
@@ -40,7 +68,7 @@ Expected<json> solveJsonProblem(const json& request)
   {
     for (const auto& [name, solver] : PROBLEMS)
       if (problem == name)
-        return solver(request, options.value());
+        return finiteAnswer(solver(request, options.value()));
   }
   catch (const json::exception& e)
   {

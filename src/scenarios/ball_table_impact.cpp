@@ -9,9 +9,10 @@ namespace
 {
 Status check(const BallTableImpact& b)
 {
-  return firstError({requirePositive(b.mass, "mass"), requirePositive(b.radius, "radius"),
-                     requireFinite(b.velocity, "velocity"), requireFinite(b.angular_velocity, "angular_velocity"),
-                     validate(b.table, "table")});
+  return firstError(
+      {requirePositive(b.mass, "mass"), requirePositive(b.radius, "radius"), requireFinite(b.velocity, "velocity"),
+       requireFinite(b.angular_velocity, "angular_velocity"), requirePlausibleSpeed(b.velocity.norm(), "velocity"),
+       requirePlausibleSpeed(b.angular_velocity.norm() * b.radius, "angular_velocity"), validate(b.table, "table")});
 }
 
 ImpactProblem makeImpactProblem(const BallTableImpact& b)

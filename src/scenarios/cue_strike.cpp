@@ -14,9 +14,9 @@ Status check(const CueStrike& s)
 {
   return firstError({requirePositive(s.cue_mass, "cue_mass"), requirePositiveOrInfinite(s.cue_end_mass, "cue_end_mass"),
                      requireDirection(s.cue_direction, "cue_direction"), requirePositive(s.cue_speed, "cue_speed"),
-                     requirePositive(s.ball_mass, "ball_mass"), requirePositive(s.ball_radius, "ball_radius"),
-                     requireDirection(s.hit_normal, "hit_normal"), validate(s.cue_contact, "cue_contact"),
-                     validate(s.table_contact, "table_contact"),
+                     requirePlausibleSpeed(s.cue_speed, "cue_speed"), requirePositive(s.ball_mass, "ball_mass"),
+                     requirePositive(s.ball_radius, "ball_radius"), requireDirection(s.hit_normal, "hit_normal"),
+                     validate(s.cue_contact, "cue_contact"), validate(s.table_contact, "table_contact"),
                      requirePositive(s.stiffness_ratio, "stiffness_ratio")});
 }
 
@@ -26,7 +26,7 @@ Status checkApproach(const Eigen::Vector3d& n, const Eigen::Vector3d& c)
   if (!(n.dot(c) < 0.0))
     return Error{
         ErrorCode::InvalidShot, "cue_direction",
-        "the cue does not approach the ball at the hit point (n.c = " + std::to_string(n.dot(c)) + " must be < 0)"};
+        "the cue does not approach the ball at the hit point (n.c = " + formatNumber(n.dot(c)) + " must be < 0)"};
   return {};
 }
 
@@ -114,13 +114,13 @@ Expected<Eigen::Vector3d> hitNormal(const Eigen::Vector3d& axis_point, const Eig
   if (discriminant < 0.0)
     return Error{ErrorCode::InvalidShot, "cue_pose",
                  "the cue axis misses the ball (closest approach " +
-                     std::to_string(std::sqrt(offset.squaredNorm() - b * b)) + " m from its centre)"};
+                     formatNumber(std::sqrt(offset.squaredNorm() - b * b)) + " m from its centre)"};
   // The tip may touch the ball or be slightly into it from round-off (a hundredth of the radius).
   const double depth = ball_radius - offset.norm();
   if (depth > 0.01 * ball_radius)
     return Error{ErrorCode::InvalidShot, "cue_pose",
-                 "the cue tip is inside the ball (" + std::to_string(offset.norm()) + " m from its centre, radius " +
-                     std::to_string(ball_radius) + " m)"};
+                 "the cue tip is inside the ball (" + formatNumber(offset.norm()) + " m from its centre, radius " +
+                     formatNumber(ball_radius) + " m)"};
   const double distance = -b - std::sqrt(discriminant);
   if (distance < -0.01 * ball_radius)
     return Error{ErrorCode::InvalidShot, "cue_pose", "the ball is behind the cue tip (the cue points away)"};

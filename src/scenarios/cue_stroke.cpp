@@ -17,8 +17,7 @@ Expected<StrokeGeometry> strokeGeometry(const CueStroke& stroke)
     return invalidArgument("theta", "must be an elevation in [-90, 90] degrees");
   const double across = stroke.a * stroke.a + stroke.b * stroke.b;
   if (!(across < 1.0))
-    return invalidArgument("a",
-                           "the hit point (a, b) must be on the ball: a^2 + b^2 < 1, got " + std::to_string(across));
+    return invalidArgument("a", "the hit point (a, b) must be on the ball: a^2 + b^2 < 1, got " + formatNumber(across));
   const Eigen::Vector3d forward(std::cos(stroke.phi), std::sin(stroke.phi), 0.0);
   const Eigen::Vector3d right(std::sin(stroke.phi), -std::cos(stroke.phi), 0.0);
   const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
@@ -30,7 +29,7 @@ Expected<StrokeGeometry> strokeGeometry(const CueStroke& stroke)
     return Error{ErrorCode::InvalidShot, "theta",
                  "at this elevation the cue cannot reach the hit point (a, b) without passing through the ball "
                  "(n.c = " +
-                     std::to_string(approach) + " must be < 0)"};
+                     formatNumber(approach) + " must be < 0)"};
   return geometry;
 }
 

@@ -14,6 +14,16 @@ Error withParameterName(Error error)
   std::replace(error.field.begin(), error.field.end(), '.', '/');
   return error;
 }
+
+/// A part's error named as the configuration names the part ("max_time" of the motion is "motion.max_time").
+Status inPart(Status status, const std::string& part)
+{
+  if (status)
+    return status;
+  Error error = status.error();
+  error.field = part + "." + error.field;
+  return error;
+}
 }  // namespace
 
 Status validate(const ShotConfiguration& c)
@@ -22,7 +32,7 @@ Status validate(const ShotConfiguration& c)
       firstError({requirePositive(c.cue_mass, "cue_mass"), requirePositiveOrInfinite(c.cue_end_mass, "cue_end_mass"),
                   requirePositive(c.ball_mass, "ball_mass"), requirePositive(c.ball_radius, "ball_radius"),
                   validate(c.cue_contact, "cue_contact"), requirePositive(c.stiffness_ratio, "stiffness_ratio"),
-                  validate(c.table, "table"), validate(c.motion), validate(c.solver, "solver")});
+                  validate(c.table, "table"), inPart(validate(c.motion), "motion"), validate(c.solver, "solver")});
   if (!status)
     return withParameterName(status.error());
   if (!(c.table.cushion_height > 0.0 && c.table.cushion_height < 2.0 * c.ball_radius))

@@ -2,12 +2,21 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "billiard_shot_planner/core/expected.hpp"
 
 namespace billiard_shot_planner
 {
+/// A number as a person writes it, for messages: 1e-20 stays 1e-20 (std::to_string would print 0.000000).
+inline std::string formatNumber(double value)
+{
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
 /// Field checks shared by every input type. Each returns an Error naming the field, or success.
 
 inline Status requireFinite(double value, const std::string& field)
@@ -20,7 +29,7 @@ inline Status requireFinite(double value, const std::string& field)
 inline Status requirePositive(double value, const std::string& field)
 {
   if (!std::isfinite(value) || value <= 0.0)
-    return invalidArgument(field, "must be finite and > 0, got " + std::to_string(value));
+    return invalidArgument(field, "must be finite and > 0, got " + formatNumber(value));
   return {};
 }
 
@@ -28,21 +37,21 @@ inline Status requirePositive(double value, const std::string& field)
 inline Status requirePositiveOrInfinite(double value, const std::string& field)
 {
   if (std::isnan(value) || value <= 0.0)
-    return invalidArgument(field, "must be > 0 (or infinite), got " + std::to_string(value));
+    return invalidArgument(field, "must be > 0 (or infinite), got " + formatNumber(value));
   return {};
 }
 
 inline Status requireNonNegative(double value, const std::string& field)
 {
   if (!std::isfinite(value) || value < 0.0)
-    return invalidArgument(field, "must be finite and >= 0, got " + std::to_string(value));
+    return invalidArgument(field, "must be finite and >= 0, got " + formatNumber(value));
   return {};
 }
 
 inline Status requireUnitInterval(double value, const std::string& field)
 {
   if (!std::isfinite(value) || value < 0.0 || value > 1.0)
-    return invalidArgument(field, "must be in [0, 1], got " + std::to_string(value));
+    return invalidArgument(field, "must be in [0, 1], got " + formatNumber(value));
   return {};
 }
 
@@ -51,6 +60,19 @@ Status requireFinite(const Eigen::MatrixBase<Derived>& value, const std::string&
 {
   if (!value.allFinite())
     return invalidArgument(field, "contains NaN or infinite entries");
+  return {};
+}
+
+/// The fastest speed, m/s, that a billiard input may have: a break shot's cue ball leaves at about 12 m/s, so 100
+/// m/s leaves a wide margin; beyond it a value is a mistake (1e300 m/s), and far beyond, it overflows the answer.
+constexpr double MAX_PLAUSIBLE_SPEED = 100.0;
+
+/// A speed (or a surface speed ωR) no faster than MAX_PLAUSIBLE_SPEED.
+inline Status requirePlausibleSpeed(double speed, const std::string& field)
+{
+  if (!(speed <= MAX_PLAUSIBLE_SPEED))
+    return invalidArgument(field, "must be at most " + formatNumber(MAX_PLAUSIBLE_SPEED) +
+                                      " m/s, a billiard speed, got " + formatNumber(speed));
   return {};
 }
 

@@ -46,8 +46,8 @@ struct SolverOptions
   bool quasi_steady_slip = true;
 };
 
-/// Checks every field (InvalidArgument naming `field`.name): tolerances in (0, 0.01) with the relative one not
-/// below the double precision (2.2e-16), chatter_energy_fraction and chatter_resolution finite and >= 0 (0 turns
+/// Checks every field (InvalidArgument naming `field`.name): relative_tolerance in [2.2e-16, 1e-3],
+/// absolute_tolerance in [1e-16, 1e-8] (coarser, the chatter cut lets energy rise), chatter_energy_fraction and chatter_resolution finite and >= 0 (0 turns
 /// that cut off), chatter_stiffness_growth > 1 (infinity turns it off), max_events and max_steps > 0.
 /// solveMultipleImpact refuses options that fail it.
 Status validate(const SolverOptions& options, const std::string& field = "options");
