@@ -1,5 +1,9 @@
 #include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
 
+#include <chrono>
+
+#include "billiard_shot_planner/core/validation.hpp"
+
 #include "dense_stepper.hpp"  // first: its Boost 1.74 workaround must come before any Boost.Math header
 
 #include <algorithm>
@@ -164,7 +168,17 @@ private:
     if (++event_count_ > options_.max_events)
       return Error{ErrorCode::EventLimitExceeded, "",
                    "the state sequence did not end within " + std::to_string(options_.max_events) + " events"};
-    return {};
+    return checkClock();
+  }
+
+  /// The wall-clock bound of one solve (SolverOptions::max_seconds), read at every event and integrator step.
+  Status checkClock() const
+  {
+    if (std::chrono::steady_clock::now() <= deadline_)
+      return {};
+    return Error{ErrorCode::TimeLimitExceeded, "",
+                 "the impact did not end within " + formatNumber(options_.max_seconds) + " s (" +
+                     std::to_string(event_count_) + " events, " + std::to_string(step_count_) + " integrator steps)"};
   }
 
   /// The contact's slip direction is integrated from now on, starting where it was following the slip.
@@ -403,6 +417,8 @@ private:
     {
       if (++step_count_ > options_.max_steps)
         return stepLimitError();
+      if (auto status = checkClock(); !status)
+        return status.error();
       const PerGuard<GuardZero>& zeros = affine_search_.nextStep();
       if (zeros.empty())
         continue;
@@ -464,6 +480,8 @@ private:
     {
       if (++step_count_ > options_.max_steps)
         return stepLimitError();
+      if (auto status = checkClock(); !status)
+        return status.error();
       const auto [t0, t1] = stepper.do_step(std::cref(dynamics_));
       samples_ = guardSamples(stepper, t0, t1);
       guard_values_.conservativeResize(samples_ + 1, Eigen::NoChange);
@@ -726,6 +744,9 @@ private:
   double t_ = 0.0;
   std::size_t event_count_ = 0;
   std::size_t step_count_ = 0;
+  std::chrono::steady_clock::time_point deadline_ =
+      std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                             std::chrono::duration<double>(options_.max_seconds));
   ImpactResult result_;
 };
 }  // namespace

@@ -17,6 +17,8 @@ const char* toString(ErrorCode code)
       return "event_limit_exceeded";
     case ErrorCode::StepLimitExceeded:
       return "step_limit_exceeded";
+    case ErrorCode::TimeLimitExceeded:
+      return "time_limit_exceeded";
     case ErrorCode::NumericalFailure:
       return "numerical_failure";
   }

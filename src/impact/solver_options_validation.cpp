@@ -21,6 +21,9 @@ constexpr double LOOSEST_RELATIVE_TOLERANCE = 1e-3;
 constexpr double FINEST_ABSOLUTE_TOLERANCE = 1e-16;
 constexpr double LOOSEST_ABSOLUTE_TOLERANCE = 1e-8;
 
+/// The longest wall-clock budget of one solve: a minute.
+constexpr double MAX_SECONDS = 60.0;
+
 /// The options are checked at every solve: the messages, and the field names, are built only for a failed check.
 class OptionCheck
 {
@@ -47,6 +50,14 @@ public:
     if (value > 1.0)
       return {};
     return invalidArgument(name(option), "must be > 1 (infinity: no cut by growth), got " + formatNumber(value));
+  }
+
+  Status seconds(double value, const char* option) const
+  {
+    if (value > 0.0 && value <= MAX_SECONDS)
+      return {};
+    return invalidArgument(name(option),
+                           "must be in (0, " + formatNumber(MAX_SECONDS) + "] s, got " + formatNumber(value));
   }
 
   Status count(std::size_t value, const char* option) const
@@ -76,6 +87,7 @@ Status validate(const SolverOptions& options, const std::string& field)
       check.nonNegative(options.chatter_resolution, "chatter_resolution"),
       check.count(options.max_events, "max_events"),
       check.count(options.max_steps, "max_steps"),
+      check.seconds(options.max_seconds, "max_seconds"),
   });
 }
 

@@ -43,8 +43,9 @@ Expected<SolverOptions> solverOptions(const json& request)
   const json& solver = request.at("solver");
   if (!solver.is_object())
     return invalidArgument("solver", "must be an object");
-  for (auto [key, target] : {std::pair{"relative_tolerance", &options.relative_tolerance},
-                             std::pair{"absolute_tolerance", &options.absolute_tolerance}})
+  for (auto [key, target] :
+       {std::pair{"relative_tolerance", &options.relative_tolerance},
+        std::pair{"absolute_tolerance", &options.absolute_tolerance}, std::pair{"max_seconds", &options.max_seconds}})
   {
     auto value = number(solver, key, *target);
     if (!value)

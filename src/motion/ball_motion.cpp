@@ -1,5 +1,6 @@
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 
+#include <chrono>
 #include <cmath>
 
 #include "../scenarios/surface_contact_checks.hpp"
@@ -34,8 +35,10 @@ struct SegmentEnd
 
 Status checkStart(const BallState& start, const Ball& ball, const Table& table)
 {
-  if (Status status = firstError({requireFinite(start.position, "position"), requireFinite(start.velocity, "v"),
-                                  requireFinite(start.angular_velocity, "omega")});
+  if (Status status =
+          firstError({requireFinite(start.position, "position"), requireFinite(start.velocity, "v"),
+                      requireFinite(start.angular_velocity, "omega"), requirePlausibleSpeed(start.velocity.norm(), "v"),
+                      requirePlausibleSpeed(start.angular_velocity.norm() * ball.radius, "omega")});
       !status)
     return status;
   const double reach = cushionReach(table, ball.radius);
@@ -54,7 +57,11 @@ class TrajectoryPredictor
 {
 public:
   TrajectoryPredictor(const Ball& ball, const Table& table, const MotionParameters& p)
-      : ball_(ball), table_(table), p_(p)
+      : ball_(ball),
+        table_(table),
+        p_(p),
+        deadline_(std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                         std::chrono::duration<double>(p.impact.max_seconds)))
   {
   }
 
@@ -143,7 +150,10 @@ private:
     }
     CushionImpact impact{ball_.mass, ball_.radius,   state.velocity, state.angular_velocity,        normal,
                          on_cloth,   table_.cushion, table_.cloth,   table_.cushion_stiffness_ratio};
-    auto result = solve(impact, p_.impact);
+    auto options = impactOptions();
+    if (!options)
+      return options.error();
+    auto result = solve(impact, options.value());
     if (!result)
       return result.error();
     state.velocity = result.value().velocity;
@@ -153,6 +163,20 @@ private:
     trajectory_.events.push_back({MotionEventType::CushionHit, t, state, rail});
     last_hit_ = {on_cloth ? rail : -1, -speedTowards(rail, state)};
     return false;
+  }
+
+  /// The impact solver's options with what is left of the trajectory's wall-clock budget (SolverOptions::
+  /// max_seconds bounds the whole trajectory, all its impacts included).
+  Expected<SolverOptions> impactOptions() const
+  {
+    const double left = std::chrono::duration<double>(deadline_ - std::chrono::steady_clock::now()).count();
+    if (!(left > 0.0))
+      return Error{ErrorCode::TimeLimitExceeded, "",
+                   "the trajectory did not end within " + formatNumber(p_.impact.max_seconds) + " s (" +
+                       std::to_string(trajectory_.events.size()) + " events)"};
+    SolverOptions options = p_.impact;
+    options.max_seconds = left;
+    return options;
   }
 
   /// Horizontal speed of the ball's centre towards cushion `rail` (0: −x, 1: +x, 2: −y, 3: +y).
@@ -182,8 +206,11 @@ private:
       trajectory_.events.push_back({MotionEventType::Landing, t, state});
       return false;
     }
+    auto options = impactOptions();
+    if (!options)
+      return options.error();
     auto result = solve(BallTableImpact{ball_.mass, ball_.radius, state.velocity, state.angular_velocity, table_.cloth},
-                        p_.impact);
+                        options.value());
     if (!result)
       return result.error();
     state.velocity = result.value().velocity;
@@ -204,6 +231,7 @@ private:
   const Ball& ball_;
   const Table& table_;
   const MotionParameters& p_;
+  std::chrono::steady_clock::time_point deadline_;  ///< of the whole trajectory (SolverOptions::max_seconds)
   BallTrajectory trajectory_;
   struct CushionHitRecord
   {
@@ -220,7 +248,8 @@ Status validate(const MotionParameters& p)
           {requirePositive(p.gravity, "gravity"), requirePositive(p.sliding_friction, "sliding_friction"),
            requirePositive(p.rolling_friction, "rolling_friction"),
            requirePositive(p.spinning_friction, "spinning_friction"),
-           requireNonNegative(p.min_bounce_speed, "min_bounce_speed"), requirePositive(p.max_time, "max_time")});
+           requireNonNegative(p.min_bounce_speed, "min_bounce_speed"),
+           requireWithin(p.max_time, 1e-3, MAX_TRAJECTORY_TIME, "max_time", "seconds; a ball stops within a minute")});
       !status)
     return status;
   if (p.max_events < 2)

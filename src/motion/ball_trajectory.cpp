@@ -108,9 +108,10 @@ MotionPhase BallTrajectory::phaseAt(double t) const
 
 std::vector<TrajectorySample> BallTrajectory::sample(double spacing) const
 {
+  spacing = std::max(spacing, duration() / static_cast<double>(MAX_SAMPLES));
   std::vector<double> times;
-  for (double t = 0.0; t < duration(); t += spacing)
-    times.push_back(t);
+  for (std::size_t k = 0; static_cast<double>(k) * spacing < duration() && k < MAX_SAMPLES; ++k)
+    times.push_back(static_cast<double>(k) * spacing);
   for (const MotionEvent& event : events)
     times.push_back(event.time);
   std::sort(times.begin(), times.end());

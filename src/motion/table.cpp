@@ -16,7 +16,7 @@ Status validate(const Table& table, const std::string& field)
           firstError({requirePositive(table.length, field + ".length"), requirePositive(table.width, field + ".width"),
                       requirePositive(table.cushion_height, field + ".cushion_height"),
                       validate(table.cloth, field + ".cloth"), validate(table.cushion, field + ".cushion"),
-                      requirePositive(table.cushion_stiffness_ratio, field + ".cushion_stiffness_ratio")});
+                      requireStiffnessRatio(table.cushion_stiffness_ratio, field + ".cushion_stiffness_ratio")});
       !status)
     return status;
   for (std::size_t i = 0; i < table.pockets.size(); ++i)

@@ -17,7 +17,7 @@ Status check(const CueStrike& s)
                      requirePlausibleSpeed(s.cue_speed, "cue_speed"), requirePositive(s.ball_mass, "ball_mass"),
                      requirePositive(s.ball_radius, "ball_radius"), requireDirection(s.hit_normal, "hit_normal"),
                      validate(s.cue_contact, "cue_contact"), validate(s.table_contact, "table_contact"),
-                     requirePositive(s.stiffness_ratio, "stiffness_ratio")});
+                     requireStiffnessRatio(s.stiffness_ratio, "stiffness_ratio")});
 }
 
 /// The one impossibility of a hit that the tip can make: the tip must approach the ball where it touches it.

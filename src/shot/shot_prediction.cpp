@@ -31,7 +31,7 @@ Status validate(const ShotConfiguration& c)
   Status status =
       firstError({requirePositive(c.cue_mass, "cue_mass"), requirePositiveOrInfinite(c.cue_end_mass, "cue_end_mass"),
                   requirePositive(c.ball_mass, "ball_mass"), requirePositive(c.ball_radius, "ball_radius"),
-                  validate(c.cue_contact, "cue_contact"), requirePositive(c.stiffness_ratio, "stiffness_ratio"),
+                  validate(c.cue_contact, "cue_contact"), requireStiffnessRatio(c.stiffness_ratio, "stiffness_ratio"),
                   validate(c.table, "table"), inPart(validate(c.motion), "motion"), validate(c.solver, "solver")});
   if (!status)
     return withParameterName(status.error());
@@ -67,7 +67,8 @@ std::vector<NamedParameter> numericParameters(ShotConfiguration& c)
           {"motion/min_bounce_speed", &c.motion.min_bounce_speed},
           {"motion/max_time", &c.motion.max_time},
           {"solver/relative_tolerance", &c.solver.relative_tolerance},
-          {"solver/absolute_tolerance", &c.solver.absolute_tolerance}};
+          {"solver/absolute_tolerance", &c.solver.absolute_tolerance},
+          {"solver/max_seconds", &c.solver.max_seconds}};
 }
 
 Status applyOverride(ShotConfiguration& configuration, const std::string& name, double value)

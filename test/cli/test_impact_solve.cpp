@@ -296,3 +296,55 @@ TEST(ImpactSolve, BallMotionBadInput)
     EXPECT_NE(run.output.find(c[1]), std::string::npos) << c[0] << "\n" << run.output;
   }
 }
+
+TEST(ImpactSolve, MeaninglessInputIsRefusedNotSolved)
+{
+  // Finite but absurd values once came back as null (NaN) with exit 0, ran out of memory, or let energy rise.
+  const std::string motion = R"({"problem": "ball_motion", "position": [0, 0], "omega": [0, 0, 0], )";
+  const std::string cases[][2] = {
+      {motion + R"("v": [1e308, 0, 0]})", "v"},
+      {motion + R"("v": [1, 0, 0], "max_time": 1e12, "spinning_friction": 1e-12})", "max_time"},
+      {motion + R"("v": [1, 0, 0], "table": {"cushion_stiffness_ratio": 2.19e-6}})", "cushion_stiffness_ratio"},
+      {motion + R"("v": [1, 0, 0], "solver": {"absolute_tolerance": 1e-300}})", "solver.absolute_tolerance"},
+      {motion + R"("v": [1, 0, 0], "solver": {"absolute_tolerance": 0.009}})", "solver.absolute_tolerance"},
+      {motion + R"("v": [1, 0, 0], "solver": {"max_seconds": 1e9}})", "solver.max_seconds"},
+      {stroke(R"({"phi_deg": 0, "speed": 1.797e308})"), "cue_speed"},
+      {stroke(R"({"phi_deg": 0, "speed": 2})", R"(, "stiffness_ratio": 1e-6)"), "stiffness_ratio"},
+  };
+  for (const auto& c : cases)
+  {
+    const SolverRun run = runSolver(c[0]);
+    EXPECT_EQ(run.exit_code, 2) << c[0] << "\n" << run.output;
+    EXPECT_NE(run.output.find(c[1]), std::string::npos) << c[0] << "\n" << run.output;
+  }
+}
+
+TEST(ImpactSolve, WorkAndOutputAreBounded)
+{
+  // A spin that hardly decays, for the longest trajectory, sampled at the finest spacing: at most
+  // BallTrajectory::MAX_SAMPLES spaced samples (plus the events), not 6 million.
+  const SolverRun spin = runSolver(
+      R"({"problem": "ball_motion", "position": [0, 0], "v": [0, 0, 0], "omega": [0, 0, 1],
+          "spinning_friction": 1e-12, "max_time": 600, "sample_spacing": 1e-4})");
+  ASSERT_EQ(spin.exit_code, 0) << spin.output;
+  const auto s = nlohmann::json::parse(spin.output);
+  EXPECT_EQ(s["outcome"], "time_limit");
+  EXPECT_LE(s["samples"].size(), 20000u + s["events"].size());
+  // A chain of 30 balls with masses over six decades collides for 30 000–150 000 events: it ends within its
+  // wall-clock budget, solved or with time_limit_exceeded (exit 1), never after seconds of work.
+  nlohmann::json chain{{"problem", "chain"}, {"wall", false}, {"solver", {{"max_seconds", 0.2}}}};
+  std::vector<double> masses, velocities(30, 0.0), stiffness(29, 1.0), restitution(29, 0.9);
+  for (int k = 0; k < 30; ++k)
+    masses.push_back(k % 2 == 0 ? 1e3 : 1e-3);
+  velocities[0] = 1.0;
+  chain["masses"] = masses;
+  chain["velocities"] = velocities;
+  chain["stiffness"] = stiffness;
+  chain["restitution"] = restitution;
+  const SolverRun run = runSolver(chain.dump());
+  if (run.exit_code != 0)
+  {
+    EXPECT_EQ(run.exit_code, 1) << run.output;
+    EXPECT_NE(run.output.find("time_limit_exceeded"), std::string::npos) << run.output;
+  }
+}

@@ -14,6 +14,7 @@ enum class ErrorCode
   InvalidShot,           ///< the cue cannot strike the ball as described
   EventLimitExceeded,    ///< the state sequence did not finish within the configured number of events
   StepLimitExceeded,     ///< the integrator did not finish within the configured number of steps
+  TimeLimitExceeded,     ///< the call did not finish within its wall-clock budget
   NumericalFailure,      ///< the integrator or a root finder failed
 };
 

@@ -63,6 +63,26 @@ Status requireFinite(const Eigen::MatrixBase<Derived>& value, const std::string&
   return {};
 }
 
+/// A value within [lowest, highest]; `why` says what the range stands for.
+inline Status requireWithin(double value, double lowest, double highest, const std::string& field, const char* why)
+{
+  if (!(value >= lowest && value <= highest))
+    return invalidArgument(field, "must be in [" + formatNumber(lowest) + ", " + formatNumber(highest) + "] (" + why +
+                                      "), got " + formatNumber(value));
+  return {};
+}
+
+/// Ratios of two contacts' normal stiffnesses that the package accepts. The solve's work grows as a ratio departs
+/// from one (a trajectory with cushion hits: 17 ms at 1, 0.19 s at 0.01, 0.5 s at 0.001, 65 s at 2e-6); no billiard
+/// contact pair is a hundred times stiffer than another.
+constexpr double MIN_STIFFNESS_RATIO = 1e-2;
+constexpr double MAX_STIFFNESS_RATIO = 1e2;
+
+inline Status requireStiffnessRatio(double value, const std::string& field)
+{
+  return requireWithin(value, MIN_STIFFNESS_RATIO, MAX_STIFFNESS_RATIO, field, "a ratio of contact stiffnesses");
+}
+
 /// The fastest speed, m/s, that a billiard input may have: a break shot's cue ball leaves at about 12 m/s, so 100
 /// m/s leaves a wide margin; beyond it a value is a mistake (1e300 m/s), and far beyond, it overflows the answer.
 constexpr double MAX_PLAUSIBLE_SPEED = 100.0;

@@ -14,6 +14,10 @@ enum class RollingModel
   Pooltool,  ///< Leckie–Greenspan / pooltool: a = μ_r g; μ_r(paper) = (7/5) μ_r(pooltool)
 };
 
+/// The longest trajectory the package predicts, s: a ball stops within a minute on any cloth; the bound keeps the
+/// work and the output of a call bounded whatever the friction coefficients.
+constexpr double MAX_TRAJECTORY_TIME = 600.0;
+
 /// Friction and stopping rules of the ball's motion on the table (spec §6). Defaults: the paper's measured values.
 struct MotionParameters
 {
@@ -25,7 +29,7 @@ struct MotionParameters
   double spinning_friction = 0.0127;
   bool planar = false;             ///< drop v_z after the shot (the paper's choice) instead of hopping
   double min_bounce_speed = 0.02;  ///< m/s: a landing that rebounds slower than this ends the hopping
-  double max_time = 60.0;          ///< s
+  double max_time = 60.0;          ///< s, [0.001, MAX_TRAJECTORY_TIME]: the trajectory is cut here (time_limit)
   int max_events = 1000;
   SolverOptions impact;  ///< for the landings and cushion impacts
 };

@@ -95,8 +95,11 @@ struct BallTrajectory
   /// State at time t (clamped to [0, duration]).
   BallState at(double t) const;
   MotionPhase phaseAt(double t) const;
-  /// Samples every `spacing` seconds, plus every event time, in order.
+  /// Samples every `spacing` seconds, plus every event time, in order. At most MAX_SAMPLES are spaced: on a path
+  /// longer than MAX_SAMPLES · spacing the spacing widens to duration / MAX_SAMPLES, so that an answer stays
+  /// bounded (a 600 s path at 1 ms would be 600 000 samples).
   std::vector<TrajectorySample> sample(double spacing) const;
+  static constexpr std::size_t MAX_SAMPLES = 20000;
 };
 
 }  // namespace billiard_shot_planner

@@ -40,7 +40,7 @@ struct NamedParameter
 /// Every numeric parameter of the configuration, by name: cue_mass, cue_end_mass, ball_mass, ball_radius,
 /// cue_contact/{restitution,friction,eta2}, stiffness_ratio, table/{length,width,cushion_height,
 /// cushion_stiffness_ratio}, table/cloth/…, table/cushion/…, motion/{gravity,sliding_friction,rolling_friction,
-/// spinning_friction,min_bounce_speed,max_time}, solver/{relative_tolerance,absolute_tolerance}.
+/// spinning_friction,min_bounce_speed,max_time}, solver/{relative_tolerance,absolute_tolerance,max_seconds}.
 std::vector<NamedParameter> numericParameters(ShotConfiguration& configuration);
 
 /// Sets one numeric parameter by name. Errors: unknown name, or a value the configuration rejects (then the
