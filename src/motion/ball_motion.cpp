@@ -242,8 +242,8 @@ Expected<BallTrajectory> predictTrajectory(const BallState& start, const Ball& b
                                   validate(parameters), validate(table)});
       !status)
     return status.error();
-  if (!(table.cushion_height > 0.0 && table.cushion_height < 2.0 * ball.radius))
-    return invalidArgument("table.cushion_height", "must be between 0 and the ball's diameter");
+  if (Status status = validateCushionHeight(table.cushion_height, ball.radius, "table.cushion_height"); !status)
+    return status.error();
   if (Status status = detail::checkStart(start, ball, table); !status)
     return status.error();
   return detail::TrajectoryPredictor(ball, table, parameters).run(start);

@@ -1,6 +1,6 @@
 // Balls touching a rail, and noses too low to hold a ball (issue 23, "Nothing gets through"): a ball placed at a
-// cushion and moving into it hits it at once, one moving away leaves it, none ever crosses a nose, and a ball leaves
-// the table only over a nose, with its bottom above it.
+// cushion and moving into it hits it at once, one moving away leaves it, none ever crosses a nose, a ball leaves the
+// table only over a nose, with its bottom above it, and a nose that cannot turn a rolling ball back is refused.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +9,7 @@
 
 #include "../../src/motion/table_events.hpp"
 #include "billiard_shot_planner/motion/ball_motion.hpp"
+#include "billiard_shot_planner/scenarios/cushion_impact.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
 
 namespace bsp = billiard_shot_planner;
@@ -325,6 +326,50 @@ TEST(RailContact, ABallRidingALowNoseInTheAirNeverEntersIt)
     {
       EXPECT_TRUE(withinInnerLines(e.state.position, table)) << e.time;
     }
+}
+
+TEST(CushionHeight, ANoseTooLowToTurnBackABallRollingIntoItIsRefused)
+{
+  // The physics of the limit: a frictionless, perfectly elastic nose turns a ball rolling straight into it back
+  // only if the contact normal rises less than 45° above the cloth, i.e. the nose is above (1 − 1/√2) R.
+  for (const double ratio : {bsp::MIN_CUSHION_HEIGHT - 0.01, bsp::MIN_CUSHION_HEIGHT + 0.01})
+  {
+    const double sin_a = 1.0 - ratio, cos_a = std::sqrt(1.0 - sin_a * sin_a);
+    bsp::CushionImpact hit;
+    hit.cushion_normal = {0.0, -cos_a, sin_a};  // the +y rail, nose below the centre
+    hit.velocity = {0.0, 1.0, 0.0};
+    hit.angular_velocity = {-1.0 / R, 0.0, 0.0};
+    hit.cushion = {1.0, 0.0, 10.0};
+    const auto result = bsp::solve(hit);
+    ASSERT_TRUE(result.ok()) << result.error().describe();
+    if (ratio < bsp::MIN_CUSHION_HEIGHT)
+    {
+      EXPECT_GT(result.value().velocity.y(), 0.0) << "still into the rail";
+      EXPECT_GT(result.value().velocity.z(), 0.0) << "and up over the nose";
+    }
+    else
+    {
+      EXPECT_LT(result.value().velocity.y(), 0.0) << "turned back";
+    }
+  }
+  // The issue's nose of 0.1 mm, just below the limit, and the limit itself.
+  bsp::Table table;
+  const bsp::BallState start = touching(table, 3, 0.5, 0.3, {0.0, 1.0, 0.0}, Eigen::Vector3d::Zero());
+  bsp::MotionParameters planar;
+  planar.planar = true;
+  for (const double h : {0.0001, bsp::MIN_CUSHION_HEIGHT * R * (1.0 - 1e-12)})
+  {
+    table.cushion_height = h;
+    const auto result = bsp::predictTrajectory(start, bsp::Ball{0.17, R}, table, planar);
+    ASSERT_FALSE(result.ok()) << h;
+    EXPECT_EQ(result.error().field, "table.cushion_height");
+  }
+  table.cushion_height = bsp::MIN_CUSHION_HEIGHT * R;
+  EXPECT_TRUE(bsp::predictTrajectory(start, bsp::Ball{0.17, R}, table, planar).ok());
+  bsp::ShotConfiguration configuration;
+  configuration.table.cushion_height = 0.0001;
+  ASSERT_FALSE(bsp::validate(configuration).ok());
+  EXPECT_EQ(bsp::validate(configuration).error().field, "table/cushion_height");
 }
 
 TEST(RailContact, InThePlaneABallRollingIntoALowNoseStaysOnTheTable)
