@@ -21,7 +21,8 @@ constexpr double TOUCH_DOWN_SPEED = 1e-9;
 /// Cushion speed (m/s) below which a ball that comes back to the cushion it just left is pressed against it: the
 /// Zeno sequence of hits has converged (what is left of it lasts some 1e-5 s). In 3 000 random shots near a rail,
 /// the sequences that end with the ball leaving the rail never went below 8e-4 m/s; those that do not went on to
-/// 1e-12 m/s and then through the cushion.
+/// 1e-12 m/s and then through the cushion. The same holds for a ball riding a nose below its centre in the air,
+/// each hop shorter than the one before.
 constexpr double SUSTAINED_CONTACT_SPEED = 1e-6;
 
 /// Where one phase ends: by itself, at a cushion, in a pocket or at the time limit.
@@ -31,6 +32,7 @@ struct SegmentEnd
   MotionEventType event;
   int cushion = -1;
   int pocket = -1;
+  NoseContact contact = NoseContact::Impact;
 };
 
 Status checkStart(const BallState& start, const Ball& ball, const Table& table)
@@ -45,7 +47,7 @@ Status checkStart(const BallState& start, const Ball& ball, const Table& table)
   const double x = std::abs(start.position.x()), y = std::abs(start.position.y());
   if (x > 0.5 * table.length || y > 0.5 * table.width)
     return invalidArgument("position", "the ball is off the table");
-  if (x > 0.5 * table.length - reach + 1e-9 || y > 0.5 * table.width - reach + 1e-9)
+  if (x > 0.5 * table.length - reach + CONTACT_DISTANCE || y > 0.5 * table.width - reach + CONTACT_DISTANCE)
     return invalidArgument("position", "the ball overlaps a cushion");
   for (std::size_t i = 0; i < table.pockets.size(); ++i)
     if ((start.position.head<2>() - table.pockets[i].centre).norm() <= table.pockets[i].radius)
@@ -108,7 +110,7 @@ private:
         finish(end.event, MotionOutcome::TimeLimit, t, state);
         return true;
       case MotionEventType::CushionHit:
-        return hitCushion(end.cushion, state, t);
+        return hitCushion(end.cushion, end.contact, state, t);
       case MotionEventType::Landing:
         return land(state, t);
       default:
@@ -124,25 +126,27 @@ private:
     if (p_.max_time - t < end.duration)
       end = {p_.max_time - t, MotionEventType::TimeLimit};
     if (auto hit = firstCushionHit(segment, table_, ball_.radius, end.duration))
-      end = {hit->time, MotionEventType::CushionHit, hit->index};
+      end = {hit->time, MotionEventType::CushionHit, hit->rail, -1, hit->contact};
     if (auto entry = firstPocketEntry(segment, table_, end.duration))
       end = {entry->time, MotionEventType::Pocketed, -1, entry->index};
     return end;
   }
 
-  Expected<bool> hitCushion(int rail, BallState& state, double t)
+  Expected<bool> hitCushion(int rail, NoseContact contact, BallState& state, double t)
   {
-    const bool on_cloth = state.position.z() <= ball_.radius * (1.0 + 1e-9) && state.velocity.z() <= 0.0;
-    if (!on_cloth && state.position.z() - ball_.radius > table_.cushion_height)
+    if (contact == NoseContact::Over)
     {
       trajectory_.events.push_back({MotionEventType::CushionHit, t, state, rail});
-      trajectory_.outcome = MotionOutcome::OffTable;  // the ball clears the cushion nose
+      trajectory_.outcome = MotionOutcome::OffTable;  // its bottom above the nose, the ball passes over it
       return true;
     }
+    // Touching the cloth, the ball meets the nose and the cloth at once; a cloth contact that separates from the
+    // start takes part only if the impact brings it back.
+    const bool on_cloth = state.position.z() <= ball_.radius * (1.0 + 1e-9);
     const Eigen::Vector3d normal = cushionNormal(rail, table_, state.position);
-    if (state.velocity.dot(normal) >= 0.0)
-      return false;  // grazing the nose in the air, to round-off: nothing to resolve, the flight goes on
-    if (on_cloth && pressedAgainst(rail, state))
+    const double approach = -state.velocity.dot(normal);
+    if (contact == NoseContact::Pressed ||
+        pressedAgainst(rail, on_cloth, on_cloth ? speedTowards(rail, state) : approach))
     {
       trajectory_.events.push_back({MotionEventType::CushionContact, t, state, rail});
       trajectory_.outcome = MotionOutcome::AgainstCushion;
@@ -161,7 +165,7 @@ private:
     if (p_.planar)
       state.velocity.z() = 0.0;
     trajectory_.events.push_back({MotionEventType::CushionHit, t, state, rail});
-    last_hit_ = {on_cloth ? rail : -1, -speedTowards(rail, state)};
+    last_hit_ = {rail, on_cloth, on_cloth ? -speedTowards(rail, state) : state.velocity.dot(normal)};
     return false;
   }
 
@@ -186,14 +190,16 @@ private:
     return rail % 2 == 1 ? state.velocity(axis) : -state.velocity(axis);
   }
 
-  /// Whether the ball, on the cloth, has come back to the cushion it last left from the cloth, both times slower than
-  /// SUSTAINED_CONTACT_SPEED: its spin presses it into the rail. The hits would go on as a Zeno sequence of ever
-  /// smaller ones until the last, approaching to round-off, was missed and the ball went through the cushion (6 of
-  /// 3 000 random shots near a rail, up to 0.5 m off the table). Sustained contact is not modelled: the path ends.
-  bool pressedAgainst(int rail, const BallState& state) const
+  /// Whether the ball has come back to the cushion it last left, on the cloth or in the air as then, both times
+  /// slower than SUSTAINED_CONTACT_SPEED (on the cloth horizontally, in the air along the contact normal): it is
+  /// pressed into the rail, by its spin on the cloth, by its weight on a nose below its centre in the air. The hits
+  /// would go on as a Zeno sequence of ever smaller ones until the last, approaching to round-off, was missed and the
+  /// ball went through the cushion (6 of 3 000 random shots near a rail, up to 0.5 m off the table). Sustained contact
+  /// is not modelled: the path ends.
+  bool pressedAgainst(int rail, bool on_cloth, double approach) const
   {
-    return last_hit_.rail == rail && last_hit_.rebound_speed < SUSTAINED_CONTACT_SPEED &&
-           speedTowards(rail, state) < SUSTAINED_CONTACT_SPEED;
+    return last_hit_.rail == rail && last_hit_.on_cloth == on_cloth &&
+           last_hit_.rebound_speed < SUSTAINED_CONTACT_SPEED && approach < SUSTAINED_CONTACT_SPEED;
   }
 
   Expected<bool> land(BallState& state, double t)
@@ -235,8 +241,9 @@ private:
   BallTrajectory trajectory_;
   struct CushionHitRecord
   {
-    int rail = -1;               ///< -1 when the last hit was in the air
-    double rebound_speed = 0.0;  ///< m/s, horizontally away from the cushion
+    int rail = -1;
+    bool on_cloth = false;
+    double rebound_speed = 0.0;  ///< m/s away from the cushion: horizontally on the cloth, along the normal in the air
   } last_hit_;
 };
 }  // namespace
@@ -264,8 +271,8 @@ Expected<BallTrajectory> predictTrajectory(const BallState& start, const Ball& b
                                   validate(parameters), validate(table)});
       !status)
     return status.error();
-  if (!(table.cushion_height > 0.0 && table.cushion_height < 2.0 * ball.radius))
-    return invalidArgument("table.cushion_height", "must be between 0 and the ball's diameter");
+  if (Status status = validateCushionHeight(table.cushion_height, ball.radius, "table.cushion_height"); !status)
+    return status.error();
   if (Status status = detail::checkStart(start, ball, table); !status)
     return status.error();
   return detail::TrajectoryPredictor(ball, table, parameters).run(start);

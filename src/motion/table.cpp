@@ -30,4 +30,17 @@ Status validate(const Table& table, const std::string& field)
   return {};
 }
 
+Status validateCushionHeight(double cushion_height, double ball_radius, const std::string& field)
+{
+  const double lowest = MIN_CUSHION_HEIGHT * ball_radius;
+  if (!(cushion_height >= lowest))
+    return invalidArgument(field,
+                           "must be at least (1 - 1/sqrt(2)) = 0.293 of the ball's radius (" + std::to_string(lowest) +
+                               " m): a lower nose cannot turn back a ball rolling straight into it, whatever its "
+                               "restitution, and sends it over the cushion");
+  if (!(cushion_height < 2.0 * ball_radius))
+    return invalidArgument(field, "must be below the ball's diameter (" + std::to_string(2.0 * ball_radius) + " m)");
+  return {};
+}
+
 }  // namespace billiard_shot_planner

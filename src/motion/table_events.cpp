@@ -4,15 +4,14 @@
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 
+#include "phase_dynamics.hpp"
+
 namespace billiard_shot_planner
 {
 namespace detail
 {
 namespace
 {
-/// Times below this (s) after a segment start are the event that started it.
-constexpr double MIN_EVENT_SEPARATION = 1e-12;
-
 /// The zero of f in the bracket [lo, hi] (f changes sign between them), located with TOMS 748 to 1e-13 s: the upper
 /// end of the final bracket, so that the event has numerically happened.
 template <class Function>
@@ -68,6 +67,11 @@ namespace
 /// of the nose line horizontally (a ball at 5 m/s covers a radius in under 6 ms).
 constexpr int NOSE_SAMPLES = 32;
 
+/// Samples before the first guard sample after a ball leaves a nose it touches, each half the next: it may come back
+/// after any fraction of the flight (the next hit of a Zeno sequence of hops), and 2^-48 of a flight is below the
+/// resolution of the events.
+constexpr int RETURN_SAMPLES = 48;
+
 /// One cushion nose: the line `cushion_height` above the cloth along the edge of the playing surface, at
 /// side · x(axis) = edge.
 struct Nose
@@ -83,56 +87,135 @@ Nose noseOf(int rail, const Table& table)
   return {axis, rail % 2 == 0 ? -1.0 : 1.0, 0.5 * (axis == 0 ? table.length : table.width)};
 }
 
-/// On the cloth the ball's centre stays at height R, so it touches the nose exactly when its centre reaches the
-/// line at `cushionReach` from the edge: a root of a quadratic.
-std::optional<double> onClothContact(const MotionSegment& segment, const Nose& nose, double reach, double horizon)
+/// The ball's motion relative to a nose at an instant, along the contact normal.
+struct Approach
 {
-  // g(τ) = side·x(τ) − (edge − reach): rises through zero when the ball reaches the nose moving towards it.
+  double overlap;  ///< m: > 0 inside the nose, 0 touching it
+  double speed;    ///< m/s: > 0 approaching
+  double rate;     ///< m/s²: how fast the approach grows
+};
+
+/// Whether a ball touching a nose meets it: it moves into it (an impact), or it does not move away and its motion
+/// presses it in, its approach becoming resolvable within `remaining` seconds (sustained contact begins). One that
+/// touches it slower than REST_SPEED and is not pressed in moves along it.
+std::optional<NoseContact> contactOf(const Approach& approach, double remaining)
+{
+  if (approach.speed > REST_SPEED)
+    return NoseContact::Impact;
+  if (approach.speed >= -REST_SPEED && approach.rate > 0.0 && approach.speed + approach.rate * remaining > REST_SPEED)
+    return NoseContact::Pressed;
+  return std::nullopt;
+}
+
+struct NoseHit
+{
+  double time;
+  NoseContact contact;
+};
+
+/// On the cloth the ball's centre stays at height R, so it touches the nose exactly when its centre reaches the
+/// line at `cushionReach` from the edge: a root of a quadratic. A ball touching the nose at the start (to
+/// CONTACT_DISTANCE, or inside it) meets it at once if it moves or is pressed into it; the root where a ball that
+/// touches it moves away falls through zero and is no contact.
+std::optional<NoseHit> onClothContact(const MotionSegment& segment, const Nose& nose, double reach, double horizon)
+{
+  // g(τ) = side·x(τ) − (edge − reach), the overlap measured horizontally: rises through zero when the ball reaches
+  // the nose moving towards it.
   const double c = nose.side * segment.start.position(nose.axis) - (nose.edge - reach);
   const double b = nose.side * segment.start.velocity(nose.axis);
   const double a = nose.side * segment.acceleration(nose.axis);
-  return firstRisingRoot(c, b, a, MIN_EVENT_SEPARATION, horizon);
+  if (c >= -CONTACT_DISTANCE)
+    if (const auto contact = contactOf({c, b, a}, horizon))
+      return NoseHit{0.0, *contact};
+  const auto tau = firstRisingRoot(c, b, a, 0.0, horizon);
+  if (!tau)
+    return std::nullopt;
+  if (const auto contact = contactOf({0.0, b + a * *tau, a}, horizon - *tau))
+    return NoseHit{*tau, *contact};
+  return std::nullopt;  // its path touches the nose line slower than REST_SPEED and turns away: it moves along it
+}
+
+/// In the air: p = (u, w) runs from the nose line to the ball's centre across the rail, u horizontally into the
+/// table, w up; the ball touches the nose when |p| = R.
+Approach airborneApproach(const MotionSegment& segment, const Nose& nose, const Table& table, double radius, double tau)
+{
+  const BallState s = segment.at(segment.start_time + tau);
+  const Eigen::Vector2d p(nose.edge - nose.side * s.position(nose.axis), s.position.z() - table.cushion_height);
+  const Eigen::Vector2d dp(-nose.side * s.velocity(nose.axis), s.velocity.z());
+  const Eigen::Vector2d ddp(-nose.side * segment.acceleration(nose.axis), segment.acceleration.z());
+  const double d = p.norm();
+  const Eigen::Vector2d n = p / d;
+  const double separating = n.dot(dp);
+  // d|p|/dτ = n·p', d²|p|/dτ² = (|p'|² − (n·p')²)/|p| + n·p'': the motion across the normal carries the centre away
+  // from the nose line, gravity pulls a ball above the nose onto it.
+  const double across = std::max(dp.squaredNorm() - separating * separating, 0.0);
+  return {radius - d, -separating, -(across / d + n.dot(ddp))};
 }
 
 /// In the air the ball touches the nose when its centre comes within R of the nose line, which can only happen
-/// while the centre is within R of the edge horizontally: the overlap R² − u² − w² (u the centre's horizontal
-/// distance inside the edge, w its height above the nose) is sampled there and its rise located with TOMS 748. If
-/// the centre crosses the edge first, the ball has passed over the nose (its bottom above it): that instant is
-/// returned too, and the hit it reports leaves the table.
-std::optional<double> airborneContact(const MotionSegment& segment, const Nose& nose, const Table& table, double radius,
-                                      double horizon)
+/// while the centre is within R of the edge horizontally: the overlap R² − u² − w² is sampled there and its rise
+/// located with TOMS 748. A ball touching the nose at the start meets it at once if it moves or is pressed into it;
+/// one moving away is followed from the start with samples ever closer to it, so that a quick return is not
+/// stepped over. If the centre reaches the nose line without touching the nose, the ball passes over it: its bottom
+/// is then above the nose, and it leaves the table.
+std::optional<NoseHit> airborneContact(const MotionSegment& segment, const Nose& nose, const Table& table,
+                                       double radius, double horizon)
 {
   const double c = nose.side * segment.start.position(nose.axis) - nose.edge;
   const double b = nose.side * segment.start.velocity(nose.axis);
   const double a = nose.side * segment.acceleration(nose.axis);
-  const auto passes = firstRisingRoot(c, b, a, MIN_EVENT_SEPARATION, horizon);
+  const auto passes = c >= 0.0 ? std::optional<double>(0.0) : firstRisingRoot(c, b, a, 0.0, horizon);
   const double end = passes ? *passes : horizon;
-  double start = MIN_EVENT_SEPARATION;
-  if (c + radius < 0.0)
-  {
-    const auto near = firstRisingRoot(c + radius, b, a, MIN_EVENT_SEPARATION, end);
-    if (!near)
-      return passes;
-    start = *near;
-  }
-  if (start >= end)  // a segment shorter than the events' resolution
-    return passes;
   auto overlap = [&](double tau)
   {
     const Eigen::Vector3d centre = segment.at(segment.start_time + tau).position;
     const double u = nose.edge - nose.side * centre(nose.axis), w = centre.z() - table.cushion_height;
     return radius * radius - u * u - w * w;
   };
-  double lo = start, f_lo = overlap(start);
-  for (int k = 1; k <= NOSE_SAMPLES; ++k)
+  auto contactAt = [&](double tau)
+  { return contactOf(airborneApproach(segment, nose, table, radius, tau), horizon - tau); };
+
+  double start = 0.0, f_start = 0.0;
+  int refinements = 0;
+  const Approach initial = airborneApproach(segment, nose, table, radius, 0.0);
+  if (initial.overlap >= -CONTACT_DISTANCE)
   {
-    const double hi = start + (end - start) * k / NOSE_SAMPLES, f_hi = overlap(hi);
+    if (const auto contact = contactOf(initial, horizon))
+      return NoseHit{0.0, *contact};
+    refinements = RETURN_SAMPLES;  // leaving it: the overlap falls from zero
+  }
+  else
+  {
+    if (c + radius < 0.0)
+    {
+      const auto near = firstRisingRoot(c + radius, b, a, 0.0, end);
+      start = near ? *near : end;
+    }
+    f_start = overlap(start);
+  }
+  const double first = (end - start) / NOSE_SAMPLES;
+  double lo = start, f_lo = f_start;
+  for (int k = 1 - refinements; k <= NOSE_SAMPLES; ++k)
+  {
+    const double hi = k <= 0 ? start + std::ldexp(first, k - 1) : start + first * k, f_hi = overlap(hi);
     if (f_lo <= 0.0 && f_hi > 0.0)
-      return locateEvent(overlap, lo, hi, f_lo, f_hi);
+    {
+      const double tau = locateEvent(overlap, lo, hi, f_lo, f_hi);
+      if (const auto contact = contactAt(tau))
+        return NoseHit{tau, *contact};
+      // A rise of round-off, or a touch slower than REST_SPEED that turns away: no contact.
+    }
     lo = hi;
     f_lo = f_hi;
   }
-  return passes;
+  if (!passes)
+    return std::nullopt;
+  if (segment.at(segment.start_time + *passes).position.z() - table.cushion_height >= radius - CONTACT_DISTANCE)
+    return NoseHit{*passes, NoseContact::Over};
+  // The centre reaches the nose line with the ball's bottom below the nose, an overlap no sample resolved: it must
+  // not go through, so it meets the nose there.
+  const auto contact = contactAt(*passes);
+  return NoseHit{*passes, contact ? *contact : NoseContact::Pressed};
 }
 }  // namespace
 
@@ -145,17 +228,18 @@ Eigen::Vector3d cushionNormal(int rail, const Table& table, const Eigen::Vector3
   return normal.normalized();
 }
 
-std::optional<Crossing> firstCushionHit(const MotionSegment& segment, const Table& table, double radius, double horizon)
+std::optional<CushionCrossing> firstCushionHit(const MotionSegment& segment, const Table& table, double radius,
+                                               double horizon)
 {
   const double reach = cushionReach(table, radius);
-  std::optional<Crossing> best;
+  std::optional<CushionCrossing> best;
   for (int rail = 0; rail < 4; ++rail)
   {
     const Nose nose = noseOf(rail, table);
-    const auto tau = segment.phase == MotionPhase::Airborne ? airborneContact(segment, nose, table, radius, horizon)
+    const auto hit = segment.phase == MotionPhase::Airborne ? airborneContact(segment, nose, table, radius, horizon)
                                                             : onClothContact(segment, nose, reach, horizon);
-    if (tau && (!best || *tau < best->time))
-      best = Crossing{*tau, rail};
+    if (hit && (!best || hit->time < best->time))
+      best = CushionCrossing{hit->time, rail, hit->contact};
   }
   return best;
 }

@@ -8,6 +8,10 @@ namespace billiard_shot_planner
 {
 namespace detail
 {
+/// Distance (m) within which the ball touches a cushion nose: the tolerance of a start position against the
+/// cushions, far above the round-off of a position after a cushion hit (1e-16 m).
+constexpr double CONTACT_DISTANCE = 1e-9;
+
 /// The horizontal distance between the ball's centre and a cushion nose when they touch with the ball on the
 /// cloth: R cos θ with sin θ = (h − R)/R, the nose being h above the cloth.
 double cushionReach(const Table& table, double radius);
@@ -16,16 +20,33 @@ double cushionReach(const Table& table, double radius);
 /// 2: −y, 3: +y), with the ball's centre at `centre` (table frame) touching the nose.
 Eigen::Vector3d cushionNormal(int rail, const Table& table, const Eigen::Vector3d& centre);
 
+/// How the ball meets a cushion nose.
+enum class NoseContact
+{
+  Impact,   ///< it touches the nose approaching faster than REST_SPEED: an impact
+  Pressed,  ///< it touches the nose without approaching while its motion presses it in: sustained contact begins
+  Over,     ///< in the air, its centre passes over the nose line with its bottom above the nose: it leaves the table
+};
+
+struct CushionCrossing
+{
+  double time;  ///< from the segment start
+  int rail;
+  NoseContact contact;
+};
+
+/// The first time in [0, horizon] at which the ball, moving along `segment`, meets a cushion nose. A ball that
+/// touches a nose at the start meets it there if it moves into it or is pressed into it; one that moves away
+/// meets it only when it comes back. Contact is decided by geometry alone: in the air the ball can pass over a nose
+/// only with its bottom above it.
+std::optional<CushionCrossing> firstCushionHit(const MotionSegment& segment, const Table& table, double radius,
+                                               double horizon);
+
 struct Crossing
 {
   double time;  ///< from the segment start
-  int index;    ///< the rail or the pocket
+  int index;    ///< the pocket
 };
-
-/// The first time in (0, horizon] at which the ball, moving along `segment`, touches a cushion nose while approaching
-/// it, or, in the air, passes over a nose without touching it (then its bottom is above the nose).
-std::optional<Crossing> firstCushionHit(const MotionSegment& segment, const Table& table, double radius,
-                                        double horizon);
 
 /// The first time in [0, horizon] at which the ball's centre enters a pocket's capture region.
 std::optional<Crossing> firstPocketEntry(const MotionSegment& segment, const Table& table, double horizon);

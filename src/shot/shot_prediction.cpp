@@ -35,9 +35,7 @@ Status validate(const ShotConfiguration& c)
                   validate(c.table, "table"), inPart(validate(c.motion), "motion"), validate(c.solver, "solver")});
   if (!status)
     return withParameterName(status.error());
-  if (!(c.table.cushion_height > 0.0 && c.table.cushion_height < 2.0 * c.ball_radius))
-    return invalidArgument("table/cushion_height", "must be between 0 and the ball's diameter");
-  return {};
+  return validateCushionHeight(c.table.cushion_height, c.ball_radius, "table/cushion_height");
 }
 
 std::vector<NamedParameter> numericParameters(ShotConfiguration& c)

@@ -38,4 +38,16 @@ struct Table
 /// Checks dimensions, pockets and contact laws; the error names the field ("table.cushion.friction").
 Status validate(const Table& table, const std::string& field = "table");
 
+/// The lowest cushion nose that can hold a ball on the table, in ball radii: 1 − 1/√2 ≈ 0.293. Below it the
+/// contact normal rises more than 45° above the cloth (sin α = (R − h)/R), and even a frictionless, perfectly
+/// elastic nose leaves a ball that meets it head-on moving on into the rail (v' = v (sin²α − e cos²α), e ≤ 1) and
+/// up over it. Friction on a rolling ball, whose contact point slips down the nose, only adds to that: the engine
+/// turns a ball rolling into a nose with e = 1 back from 0.295 R without friction, from 0.2975 to 0.325 R with μ from
+/// 0.1 to 1 and η² from 1 to 10.
+constexpr double MIN_CUSHION_HEIGHT = 1.0 - 0.70710678118654752440;
+
+/// Checks the cushion nose against the ball: at least MIN_CUSHION_HEIGHT radii above the cloth and below the top of
+/// the ball. `field` names the nose height in the error.
+Status validateCushionHeight(double cushion_height, double ball_radius, const std::string& field);
+
 }  // namespace billiard_shot_planner
