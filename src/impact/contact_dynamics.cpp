@@ -144,9 +144,12 @@ void ContactDynamics::followSlip(const double* y, Eigen::VectorXd& force) const
   addLagRates(y, force);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
+    // Only a sliding contact has tangential rows: a frictionless one last in contact space has none to read.
+    if (!contacts_[i].followsSlip())
+      continue;
     const Eigen::Vector2d v_t = follow_velocity_.segment<2>(space_.offset[i] + 1);
     const double speed = v_t.norm();
-    if (!contacts_[i].followsSlip() || speed == 0.0)
+    if (speed == 0.0)
       continue;
     const double sin_lag = std::sin(lags_[i].angle), cos_lag = std::cos(lags_[i].angle);
     const Eigen::Vector2d along = v_t / speed;
@@ -163,17 +166,21 @@ void ContactDynamics::firstOrderLags(const double* y, const Eigen::VectorXd& w, 
   lags.assign(contacts_.size(), SlipLag{});
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
+    if (!contacts_[i].followsSlip())
+      continue;
     const Eigen::Vector2d v_t = w.segment<2>(space_.offset[i] + 1);
-    if (contacts_[i].followsSlip() && v_t.norm() > 0.0)
+    if (v_t.norm() > 0.0)
       directions_[i] = v_t.normalized();
   }
   forcesAlongDirections(y, force);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
+    if (!contacts_[i].followsSlip())
+      continue;
     const int row = space_.offset[i];
     const Eigen::Vector2d v_t = w.segment<2>(row + 1);
     const double speed = v_t.norm();
-    if (!contacts_[i].followsSlip() || speed == 0.0)
+    if (speed == 0.0)
       continue;
     const Eigen::Vector2d a_t(space_.delassus.row(row + 1).dot(force), space_.delassus.row(row + 2).dot(force));
     const double turn_rate = (v_t.x() * a_t.y() - v_t.y() * a_t.x()) / (speed * speed);
