@@ -118,6 +118,8 @@ bool AffineCrossingSearch::isolate(double a, const PerGuard<Sample>& at_a, doubl
       case Crossing::Undecided:
         if (depth < MAX_REFINEMENTS)
           undecided.push_back(g);
+        else if (std::abs(at_a[g].value) <= noise_[g] && at_b[g].value > noise_[g])
+          found = bracketRiseFromZero(g, a, b, at_b[g].value) || found;
         break;
       case Crossing::Excluded:
         break;
@@ -137,6 +139,21 @@ bool AffineCrossingSearch::isolate(double a, const PerGuard<Sample>& at_a, doubl
   return isolate(middle, at_middle, b, at_b, depth + 1) || found;
 }
 
+bool AffineCrossingSearch::bracketRiseFromZero(std::size_t g, double a, double b, double gb)
+{
+  // Its rise is bracketed above its value at a and round-off (it may start just above zero, taken for zero when
+  // falling by start): the zero the interval brackets is then the rise's, after any dip, and it lies after a. A rise
+  // found at a itself would fire at the same instant for ever: a reactivated rigid link that no force presses yet is
+  // released at once.
+  stepper_->moveTo(a);
+  const double at_a = sample(g).value;
+  const double level = std::max(at_a, 0.0) + noise_[g];
+  if (!(gb > level))
+    return false;
+  brackets_.push_back({g, a, b, at_a - level, gb - level, level});
+  return true;
+}
+
 bool AffineCrossingSearch::endBy(double limit, Bracket& bracket) const
 {
   if (limit >= bracket.b)
@@ -144,7 +161,7 @@ bool AffineCrossingSearch::endBy(double limit, Bracket& bracket) const
   if (limit <= bracket.a)
     return false;
   stepper_->moveTo(limit);
-  const double value = sample(bracket.guard).value;
+  const double value = sample(bracket.guard).value - bracket.level;
   if (value <= 0.0)
     return false;
   bracket.b = limit;
@@ -163,11 +180,12 @@ double AffineCrossingSearch::risingZero(Bracket bracket) const
   {
     stepper_->moveTo(t);
     const Sample at_t = sample(bracket.guard);
-    (at_t.value > 0.0 ? b : a) = t;
+    const double value = at_t.value - bracket.level;
+    (value > 0.0 ? b : a) = t;
     // Once converged the zero lies well within the tolerance of t + step: a point just past it, on the other side
     // from t, closes the bracket. A step that would leave the bracket bisects it.
-    const double step = -at_t.value / at_t.rate;
-    const double past = std::abs(step) <= 0.25 * tolerance ? (at_t.value > 0.0 ? -0.25 : 0.25) * tolerance : 0.0;
+    const double step = -value / at_t.rate;
+    const double past = std::abs(step) <= 0.25 * tolerance ? (value > 0.0 ? -0.25 : 0.25) * tolerance : 0.0;
     const double next = t + step + past;
     t = next > a && next < b ? next : 0.5 * (a + b);
   }

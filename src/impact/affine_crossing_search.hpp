@@ -68,12 +68,13 @@ private:
     double rate;
   };
 
-  /// An interval at whose ends a guard is ≤ 0 and > 0.
+  /// An interval at whose ends a guard is ≤ level and > level (ga, gb: its values less the level).
   struct Bracket
   {
     std::size_t guard;
     double a, b;
     double ga, gb;
+    double level = 0.0;
   };
 
   /// What the samples at the ends of an interval tell of one guard.
@@ -92,6 +93,13 @@ private:
   Crossing classify(std::size_t g, double a, Sample ga, double b, Sample gb) const;
   /// The first brackets of the guards in pending_[depth] within [a, b] into brackets_; whether one was found.
   bool isolate(double a, const PerGuard<Sample>& at_a, double b, const PerGuard<Sample>& at_b, int depth);
+  /// A guard at zero (to round-off) at a and above zero at b, the ends of the finest interval, that classify left
+  /// undecided (it brackets a zero start only where the guard rises at first order): the guard rises through zero in
+  /// between, by its curvature, after a dip where it falls first. Brackets that rise into brackets_; whether it did.
+  /// Dropped as undecided instead, the guard was above zero at the start of every later interval, where nothing is
+  /// bracketed: a chain's contact approached at the reactivation threshold when the state started never
+  /// reactivated, and its balls went through each other until the next event.
+  bool bracketRiseFromZero(std::size_t g, double a, double b, double gb);
   /// Narrows the bracket to end by `limit` (the earliest zero found so far); false when the guard is still ≤ 0
   /// there, so that its zero comes later and cannot fire.
   bool endBy(double limit, Bracket& bracket) const;
