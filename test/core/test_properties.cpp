@@ -89,48 +89,50 @@ void expectEnergyDoesNotRise(const bsp::ImpactResult& impact)
 
 TEST(Properties, ChainsConserveMomentumAndNeverGainEnergy)
 {
-  forRandomCases(200,
-                 [](std::mt19937& rng)
-                 {
-                   bsp::BallChain chain;
-                   const int balls = std::uniform_int_distribution<int>(2, 8)(rng);
-                   for (int i = 0; i < balls; ++i)
-                   {
-                     chain.masses.push_back(logUniform(rng, 0.1, 10.0));
-                     chain.velocities.push_back(i == 0 ? 1.0 : uniform(rng, -0.3, 0.3));
-                   }
-                   chain.wall = uniform(rng, 0.0, 1.0) < 0.3;
-                   for (std::size_t c = 0; c < chain.contactCount(); ++c)
-                   {
-                     chain.stiffness.push_back(logUniform(rng, 0.1, 10.0));
-                     chain.restitution.push_back(uniform(rng, 0.0, 1.0));
-                   }
-                   const auto result = bsp::solve(chain);
-                   if (!result.ok())
-                   {
-                     EXPECT_EQ(result.error().code, bsp::ErrorCode::NoApproachingContact) << result.error().describe();
-                     return;
-                   }
-                   expectEnergyDoesNotRise(result.value());
-                   const Eigen::VectorXd& v = result.value().velocity;
-                   double before = 0.0, after = 0.0;
-                   for (int i = 0; i < balls; ++i)
-                   {
-                     before += chain.masses[i] * chain.velocities[i];
-                     after += chain.masses[i] * v(i);
-                   }
-                   if (!chain.wall)
-                   {
-                     EXPECT_NEAR(after, before, 1e-9 * (1 + std::abs(before)));
-                   }
-                   // Afterwards no two neighbours approach each other, nor the last ball the wall.
-                   for (int i = 0; i + 1 < balls; ++i)
-                     EXPECT_LE(v(i) - v(i + 1), 1e-9) << "contact " << i;
-                   if (chain.wall)
-                   {
-                     EXPECT_LE(v(balls - 1), 1e-9);
-                   }
-                 });
+  forRandomCases(
+      200,
+      [](std::mt19937& rng)
+      {
+        bsp::BallChain chain;
+        const int balls = std::uniform_int_distribution<int>(2, 8)(rng);
+        for (int i = 0; i < balls; ++i)
+        {
+          chain.masses.push_back(logUniform(rng, 0.1, 10.0));
+          chain.velocities.push_back(i == 0 ? 1.0 : uniform(rng, -0.3, 0.3));
+        }
+        chain.wall = uniform(rng, 0.0, 1.0) < 0.3;
+        for (std::size_t c = 0; c < chain.contactCount(); ++c)
+        {
+          chain.stiffness.push_back(logUniform(rng, 0.1, 10.0));
+          chain.restitution.push_back(uniform(rng, 0.0, 1.0));
+        }
+        const auto result = bsp::solve(chain);
+        if (!result.ok())
+        {
+          EXPECT_TRUE(result.error().code == bsp::ErrorCode::NoApproachingContact || endedOnABound(result.error()))
+              << result.error().describe();
+          return;
+        }
+        expectEnergyDoesNotRise(result.value());
+        const Eigen::VectorXd& v = result.value().velocity;
+        double before = 0.0, after = 0.0;
+        for (int i = 0; i < balls; ++i)
+        {
+          before += chain.masses[i] * chain.velocities[i];
+          after += chain.masses[i] * v(i);
+        }
+        if (!chain.wall)
+        {
+          EXPECT_NEAR(after, before, 1e-9 * (1 + std::abs(before)));
+        }
+        // Afterwards no two neighbours approach each other, nor the last ball the wall.
+        for (int i = 0; i + 1 < balls; ++i)
+          EXPECT_LE(v(i) - v(i + 1), 1e-9) << "contact " << i;
+        if (chain.wall)
+        {
+          EXPECT_LE(v(balls - 1), 1e-9);
+        }
+      });
 }
 
 TEST(Properties, BallBallTableCollisionsEndApartAndNeverGainEnergy)
