@@ -8,7 +8,7 @@ export PATH="/usr/bin:/bin:/usr/sbin:/sbin:${PATH}"
 REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-${REPO_ROOT}/build}"
 
-# Every Debian package the build, tests, demo and benchmarks use (there is no rosdep on these machines).
+# Every Debian package the build, tests, demo, benchmarks and fuzzing use (there is no rosdep on these machines).
 PACKAGES=(
   build-essential cmake
   catkin ros-core-dev python3-catkin-pkg
@@ -19,6 +19,7 @@ PACKAGES=(
   libgtest-dev libbenchmark-dev
   rviz xvfb xauth libgl1-mesa-dri imagemagick python3-pil
   clang-format clang-tidy catkin-lint
+  clang libclang-rt-14-dev
 )
 
 log() { printf '\n\033[1m== %s\033[0m\n' "$*"; }
