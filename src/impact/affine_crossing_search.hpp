@@ -39,12 +39,16 @@ struct GuardZero
 /// The crossings of a closed-form state's guards when every one is affine (every frictionless state, rigid links
 /// included), found with bounds instead of samples.
 ///
-/// Each guard is one kinematic quantity, a sum of the modes' sines: the closed form gives its value and rate, and a
-/// bound M on its second derivative over the state (from the modes' amplitudes). Taylor's bound from each end of an
-/// interval, g(a + u) ≤ g(a) + ġ(a)u + Mu²/2, then proves the interval free of crossings, or it is halved (down to a
-/// sixteenth of a step) for all undecided guards at once. Zeros are found by Newton's method kept inside their
-/// bracket. So a step costs one evaluation of the modes, at its end, where the sampled search took four, and it sees
-/// the crossing pairs those samples could step over.
+/// Each guard is one kinematic quantity, a sum of the modes' sines: the closed form gives its value and first two
+/// derivatives, and bounds M, J on its second and third derivatives over the state (from the modes' amplitudes).
+/// Taylor's bound from each end of an interval, g(a + u) ≤ g(a) + ġ(a)u + Mu²/2 or, to third order,
+/// g(a) + ġ(a)u + g̈(a)u²/2 + Ju³/6 (which decides a guard that starts at a double zero, a contact touching at rest:
+/// the second-order bound cannot), or the chord's, g ≤ max(g(a), g(b)) + Mh²/8 over a width h, then proves the
+/// interval free of crossings, or it is halved for all undecided guards at once, until the chord's bound is within
+/// the guard's round-off (MAX_REFINEMENTS): a guard that touches zero nearly tangentially (a light ball between a
+/// heavy one and the table, its velocity back to zero every fast period) is decided, never dropped. Zeros are found
+/// by Newton's method kept inside their bracket. So a step costs one evaluation of the modes, at its end, where the
+/// sampled search took four, and it sees the crossing pairs those samples could step over.
 class AffineCrossingSearch
 {
 public:
@@ -61,11 +65,12 @@ public:
   double stepLength() const { return stepper_->step(); }
 
 private:
-  /// An affine guard's value and time rate at one instant.
+  /// An affine guard's value and its first two time derivatives at one instant.
   struct Sample
   {
     double value;
     double rate;
+    double acceleration;
   };
 
   /// An interval at whose ends a guard is ≤ level and > level (ga, gb: its values less the level).
@@ -85,12 +90,30 @@ private:
     Undecided,
   };
 
-  static constexpr int MAX_REFINEMENTS = 4;
+  /// Halvings of a step: after D of them the chord's bound Mh²/8 is step²M/2^(2D+3), below the guard's round-off
+  /// (NOISE · M · step², affine_crossing_search.cpp) from D = 19 on. An interval still undecided there has ends
+  /// within round-off of zero or above it: the guard either stays within twice its round-off of zero (no crossing
+  /// it could resolve) or rises out of its round-off (a crossing, bracketed). Stopped after 4 halvings, the search
+  /// drops a light ball's velocity that touches zero by 8e-6 between two samples at −4e-5, and takes its end of
+  /// compression a fast period late (project issue 23).
+  static constexpr int MAX_REFINEMENTS = 19;
+  /// From this halving on, an undecided guard is also tried by taylorExcludes: there the remainder of its expansion
+  /// is below its round-off (h¹⁰M₁₀/10! ≤ M·step²·4⁻¹⁰/10!, 3e-13 of the modal terms). A guard that leaves zero at a
+  /// zero of high order (the far end of a chain, which the collision reaches through the balls between) is decided
+  /// there, where the bounds on its second and third derivatives, set by the whole state's modes, need halving after
+  /// halving (a 10-ball chain: 10 times the instructions).
+  static constexpr int TAYLOR_DEPTH = 2;
 
   /// Every guard's value and rate at t into `samples`.
   void sampleAll(double t, PerGuard<Sample>& samples) const;
   Sample sample(std::size_t g) const;
-  Crossing classify(std::size_t g, double a, Sample ga, double b, Sample gb) const;
+  /// The guard's value and rate alone (root finding).
+  Sample sampleValue(std::size_t g) const;
+  /// `last`: no halving follows (see MAX_REFINEMENTS).
+  Crossing classify(std::size_t g, double a, Sample ga, double b, Sample gb, bool last) const;
+  /// Whether Taylor's expansion of the guard to order TAYLOR_ORDER from an end of [a, b], its terms that can only
+  /// lower it left out and its remainder bounded, proves it within `noise` of zero or below over the interval.
+  bool taylorExcludes(std::size_t g, double a, Sample ga, double b, Sample gb) const;
   /// The first brackets of the guards in pending_[depth] within [a, b] into brackets_; whether one was found.
   bool isolate(double a, const PerGuard<Sample>& at_a, double b, const PerGuard<Sample>& at_b, int depth);
   /// A guard at zero (to round-off) at a and above zero at b, the ends of the finest interval, that classify left
@@ -108,10 +131,12 @@ private:
 
   const LinearPhaseStepper* stepper_ = nullptr;
   PerGuard<AffineGuard> guards_;
-  PerGuard<double> curvature_;  ///< bounds on the guards' second derivatives
-  PerGuard<double> noise_;      ///< round-off of the guards' values
-  double t_ = 0.0;              ///< start of the next step
-  PerGuard<Sample> at_start_, at_end_;
+  PerGuard<LinearPhaseStepper::GuardBounds> bounds_;  ///< on the guards' second and third derivatives
+  PerGuard<double> noise_;                            ///< round-off of the guards' values
+  double t_ = 0.0;                                    ///< start of the next step
+  /// The guards at the ends of the step, the start's at ends_[start_]: the next step starts where this one ended.
+  std::array<PerGuard<Sample>, 2> ends_;
+  std::size_t start_ = 0;
   PerGuard<Bracket> brackets_;
   PerGuard<GuardZero> zeros_;
   /// Guards still undecided at each depth of a step's halving, and their samples at each depth's middle.

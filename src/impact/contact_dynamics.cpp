@@ -337,7 +337,9 @@ double ContactDynamics::strainEnergy(std::size_t contact, const double* y) const
     forces(y, follow_force_);
     normal_force = follow_force_(space_.offset[contact]);
   }
-  const double cone = state.coneLength(normal_force);
+  // A link that pulls is released at the instant it is made, and has no cone meanwhile (squared, its force would
+  // read as strain energy, up to 1 % of a random strike's).
+  const double cone = state.coneLength(std::max(normal_force, 0.0));
   return normal + 0.5 * state.kappa * cone * cone;
 }
 

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 
 #include "billiard_shot_planner/impact/contact.hpp"
+#include "contact_space.hpp"
 
 namespace billiard_shot_planner
 {
@@ -24,6 +25,12 @@ struct ContactState
   bool slipping = false;
   bool rigid = false;      ///< stiffness is infinite: activation makes a rigid link
   bool chattered = false;  ///< rigid because an infinite sequence was cut at its limit
+  /// A rigid link that jammed: its slip would start with a negative sliding speed or a pulling force (Painlevé's
+  /// inconsistency), so it sticks, and stays stuck until it lets go (see jammedLink).
+  bool jammed = false;
+  /// Approach (dimensionless) beyond which an inactive contact reactivates: round-off, VELOCITY_TOLERANCE, or the
+  /// round-off of its velocity from the impulses where those are large (set when it stops touching).
+  double reactivation_speed = VELOCITY_TOLERANCE;
   int ends_of_compression = 0;
   double stiffness = 1.0;  ///< current k = k̄ / e^{2j}
   double original_stiffness = 1.0;

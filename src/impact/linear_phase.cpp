@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace billiard_shot_planner
 {
@@ -150,7 +151,7 @@ bool LinearPhaseStepper::build(const ContactSpace& space, const std::vector<Cont
   omega_ = eigenvalues_.cwiseMax(0.0).cwiseSqrt();
   spring_from_modes_.noalias() = sqrt_k_.cwiseInverse().asDiagonal() * eigenvectors_;
   force_from_modes_.noalias() = force_from_s_ * spring_from_modes_;
-  velocity_map_made_ = false;  // by the first affineGuardCurvature: only the affine search uses it
+  velocity_map_made_ = false;  // by the first affineGuardBounds: only the affine search uses it
 
   // Modal coordinates of z = K^{1/2} s_R and of its rate (z and ż held in calc_state's scratch for the moment).
   position_.resize(r);
@@ -162,6 +163,7 @@ bool LinearPhaseStepper::build(const ContactSpace& space, const std::vector<Cont
   }
   modal_position_.noalias() = eigenvectors_.transpose() * position_;
   modal_velocity_.noalias() = eigenvectors_.transpose() * integral_;
+  modes_time_ = std::numeric_limits<double>::quiet_NaN();  // position_ and integral_ held scratch
   const double fastest = r > 0 ? omega_.maxCoeff() : 0.0;
   step_ = radians_per_step / (fastest > 0.0 ? fastest : 1.0);
   return true;
@@ -196,6 +198,9 @@ void LinearPhaseStepper::diagonalise()
 
 void LinearPhaseStepper::evaluateModes(double t) const
 {
+  if (t == modes_time_)
+    return;  // the crossing search reads the guards at one instant in turn
+  modes_time_ = t;
   const double tau = t - t0_;
   for (Eigen::Index j = 0; j < omega_.size(); ++j)
     std::tie(position_(j), integral_(j)) = oscillator(modal_position_(j), modal_velocity_(j), omega_(j), tau);
@@ -221,55 +226,116 @@ void LinearPhaseStepper::calc_kinematics(double t, OdeState& y, Kinematics& kine
   dynamics_->relativeVelocity(y.data(), kinematics.velocity);
 }
 
-std::pair<double, double> LinearPhaseStepper::affineGuard(const AffineGuard& guard) const
+template <bool Full>
+LinearPhaseStepper::GuardValue LinearPhaseStepper::affineGuard(const AffineGuard& guard) const
 {
-  std::pair<double, double> quantity;
+  GuardValue quantity{};
   switch (guard.quantity)
   {
     case AffineGuard::Quantity::Velocity:
-      quantity = velocityAt(guard.row);
+      quantity = velocityAt<Full>(guard.row);
       break;
     case AffineGuard::Quantity::Spring:
-      quantity = springAt(guard.row);
+      quantity = springAt<Full>(guard.row);
       break;
     case AffineGuard::Quantity::Force:
-      quantity = forceAt(guard.row);
+      quantity = forceAt<Full>(guard.row);
       break;
   }
-  return {guard.sign * quantity.first + guard.offset, guard.sign * quantity.second};
+  return {guard.sign * quantity.value + guard.offset, guard.sign * quantity.rate, guard.sign * quantity.acceleration};
 }
 
-double LinearPhaseStepper::affineGuardCurvature(const AffineGuard& guard) const
+void LinearPhaseStepper::makeVelocityMap() const
 {
-  // Mode j: p = a cos ωτ + (b/ω) sin ωτ, so |ṗ| ≤ |b| + ω|a| and |p̈| = ω²|p| ≤ ω(|b| + ω|a|). The velocity's
-  // second derivative is W F(ṗ), the spring's and the force's are linear in p̈.
   if (!velocity_map_made_)
     velocity_from_integrals_.noalias() = space_->delassus * force_from_modes_;
   velocity_map_made_ = true;
-  double bound = 0.0;
+}
+
+LinearPhaseStepper::GuardBounds LinearPhaseStepper::affineGuardBounds(const AffineGuard& guard) const
+{
+  // Mode j: p = a cos ωτ + (b/ω) sin ωτ, so |ṗ| ≤ |b| + ω|a|, |p̈| = ω²|p| ≤ ω(|b| + ω|a|) and |p⃛| = ω²|ṗ|. The
+  // velocity's derivatives are W F(ṗ), W F(p̈), the spring's and the force's are linear in p̈, p⃛.
+  makeVelocityMap();
+  GuardBounds bounds{0.0, 0.0, 0.0};
   const auto moving = std::find(moving_rows_.begin(), moving_rows_.end(), guard.row);
   for (Eigen::Index j = 0; j < omega_.size(); ++j)
   {
     const double rate_bound = std::abs(modal_velocity_(j)) + omega_(j) * std::abs(modal_position_(j));
-    const double acceleration_bound = omega_(j) * rate_bound;
+    double coefficient = 0.0, second = 0.0;  // the map of the mode onto the guard, and its bound's order in ω
     switch (guard.quantity)
     {
       case AffineGuard::Quantity::Velocity:
-        bound += std::abs(velocity_from_integrals_(guard.row, j)) * rate_bound;
+        coefficient = velocity_from_integrals_(guard.row, j);
+        second = rate_bound;
         break;
       case AffineGuard::Quantity::Spring:
         if (moving != moving_rows_.end())
-          bound += std::abs(spring_from_modes_(moving - moving_rows_.begin(), j)) * acceleration_bound;
+          coefficient = spring_from_modes_(moving - moving_rows_.begin(), j);
+        second = omega_(j) * rate_bound;
         break;
       case AffineGuard::Quantity::Force:
-        bound += std::abs(force_from_modes_(guard.row, j)) * acceleration_bound;
+        coefficient = force_from_modes_(guard.row, j);
+        second = omega_(j) * rate_bound;
         break;
     }
+    double highest = std::abs(coefficient) * second;
+    for (int k = 2; k < TAYLOR_ORDER; ++k)
+      highest *= omega_(j);
+    bounds.second += std::abs(coefficient) * second;
+    bounds.third += std::abs(coefficient) * omega_(j) * second;
+    bounds.highest += highest;
   }
-  return bound;
+  return bounds;
 }
 
-std::pair<double, double> LinearPhaseStepper::velocityAt(int row) const
+void LinearPhaseStepper::affineGuardDerivatives(const AffineGuard& guard, double t, double* derivatives) const
+{
+  evaluateModes(t);
+  for (int k = 2; k < TAYLOR_ORDER; ++k)
+    derivatives[k] = 0.0;
+  // The guard's derivative of order k is the modes' of order k − shift: the velocity is an integral of the modes,
+  // the spring and the force are the modes themselves. The modes' derivatives cycle, p⁽ᵏ⁺²⁾ = −ω²p⁽ᵏ⁾.
+  const Eigen::MatrixXd* map = &force_from_modes_;
+  Eigen::Index map_row = guard.row;
+  int shift = 0;
+  switch (guard.quantity)
+  {
+    case AffineGuard::Quantity::Velocity:
+      map = &velocity_from_integrals_;
+      shift = 1;
+      break;
+    case AffineGuard::Quantity::Spring:
+    {
+      const auto moving = std::find(moving_rows_.begin(), moving_rows_.end(), guard.row);
+      if (moving == moving_rows_.end())
+        return;
+      map = &spring_from_modes_;
+      map_row = moving - moving_rows_.begin();
+      break;
+    }
+    case AffineGuard::Quantity::Force:
+      break;
+  }
+  for (Eigen::Index j = 0; j < omega_.size(); ++j)
+  {
+    const double coefficient = guard.sign * (*map)(map_row, j);
+    const double factor = -omega_(j) * omega_(j);
+    double even = coefficient * position_(j), odd = coefficient * modalRate(j);  // orders shift + 2m, shift + 2m + 1
+    for (int k = shift; k < TAYLOR_ORDER; k += 2)
+    {
+      if (k >= 2)
+        derivatives[k] += even;
+      if (k + 1 >= 2 && k + 1 < TAYLOR_ORDER)
+        derivatives[k + 1] += odd;
+      even *= factor;
+      odd *= factor;
+    }
+  }
+}
+
+template <bool Full>
+LinearPhaseStepper::GuardValue LinearPhaseStepper::velocityAt(int row) const
 {
   // From the impulses, as the integrator has it: w = w0 + W I, ẇ = W F (see calc_kinematics).
   double velocity = space_->w0(row), rate = 0.0;
@@ -287,34 +353,47 @@ std::pair<double, double> LinearPhaseStepper::velocityAt(int row) const
     velocity += coupling * impulse;
     rate += coupling * force;
   }
-  return {velocity, rate};
+  double acceleration = 0.0;  // ẅ = W Ḟ, with the map that affineGuardBounds made when the search started
+  if constexpr (Full)
+    for (Eigen::Index j = 0; j < omega_.size(); ++j)
+      acceleration += velocity_from_integrals_(row, j) * modalRate(j);
+  return {velocity, rate, acceleration};
 }
 
-std::pair<double, double> LinearPhaseStepper::springAt(int row) const
+template <bool Full>
+LinearPhaseStepper::GuardValue LinearPhaseStepper::springAt(int row) const
 {
   const Eigen::Index n = space_->size;
   double spring = base_state_[static_cast<std::size_t>(n + row)], rate = 0.0;
   const auto moving = std::find(moving_rows_.begin(), moving_rows_.end(), row);
   if (moving == moving_rows_.end())
-    return {spring, rate};
+    return {spring, rate, 0.0};
   const auto a = static_cast<Eigen::Index>(moving - moving_rows_.begin());
+  double acceleration = 0.0;
   for (Eigen::Index j = 0; j < omega_.size(); ++j)
   {
-    spring += spring_from_modes_(a, j) * position_(j);
+    const double term = spring_from_modes_(a, j) * position_(j);
+    spring += term;
     rate += spring_from_modes_(a, j) * modalRate(j);
+    if constexpr (Full)
+      acceleration -= omega_(j) * omega_(j) * term;
   }
-  return {spring, rate};
+  return {spring, rate, acceleration};
 }
 
-std::pair<double, double> LinearPhaseStepper::forceAt(int row) const
+template <bool Full>
+LinearPhaseStepper::GuardValue LinearPhaseStepper::forceAt(int row) const
 {
-  double force = 0.0, rate = 0.0;
+  double force = 0.0, rate = 0.0, acceleration = 0.0;
   for (Eigen::Index j = 0; j < omega_.size(); ++j)
   {
-    force += force_from_modes_(row, j) * position_(j);
+    const double term = force_from_modes_(row, j) * position_(j);
+    force += term;
     rate += force_from_modes_(row, j) * modalRate(j);
+    if constexpr (Full)
+      acceleration -= omega_(j) * omega_(j) * term;
   }
-  return {force, rate};
+  return {force, rate, acceleration};
 }
 
 void LinearPhaseStepper::addModes(OdeState& y, double* force) const
@@ -339,6 +418,10 @@ void LinearPhaseStepper::addModes(OdeState& y, double* force) const
       force[i] += force_column[i] * p;
   }
 }
+
+// The affine search's two kinds of samples.
+template LinearPhaseStepper::GuardValue LinearPhaseStepper::affineGuard<true>(const AffineGuard&) const;
+template LinearPhaseStepper::GuardValue LinearPhaseStepper::affineGuard<false>(const AffineGuard&) const;
 
 }  // namespace detail
 }  // namespace billiard_shot_planner

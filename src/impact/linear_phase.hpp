@@ -48,12 +48,34 @@ public:
   void calc_state(double t, OdeState& y) const;
   /// Moves the modes to t, for affineGuard (calc_state and calc_kinematics move them too).
   void moveTo(double t) const { evaluateModes(t); }
-  /// Value and time rate of an affine guard where the modes were last moved: a few products of the modes, far
-  /// cheaper than the state and its kinematics, with the rate for the root finding.
-  std::pair<double, double> affineGuard(const AffineGuard& guard) const;
-  /// Bound on the affine guard's second time derivative over the whole state (from the modes' amplitudes): with
-  /// its values and rates at both ends it proves an interval free of crossings (see AffineCrossingSearch).
-  double affineGuardCurvature(const AffineGuard& guard) const;
+  /// An affine guard's value and its first two time derivatives at one instant.
+  struct GuardValue
+  {
+    double value;
+    double rate;
+    double acceleration;
+  };
+  /// Value and time derivatives of an affine guard where the modes were last moved: a few products of the modes,
+  /// far cheaper than the state and its kinematics, with the rate for the root finding. After affineGuardBounds
+  /// (the search asks for the bounds first). Without Full, only the value and the rate (the root finding's).
+  template <bool Full>
+  GuardValue affineGuard(const AffineGuard& guard) const;
+  /// Order of the Taylor expansions of affineGuardDerivatives: the derivatives below it are exact, the one of this
+  /// order is bounded (GuardBounds::highest).
+  static constexpr int TAYLOR_ORDER = 10;
+  /// Bounds on an affine guard's time derivatives over the whole state.
+  struct GuardBounds
+  {
+    double second;
+    double third;
+    double highest;  ///< of order TAYLOR_ORDER
+  };
+  /// Bounds on the affine guard's time derivatives over the whole state (from the modes' amplitudes): with its
+  /// values and derivatives at both ends they prove an interval free of crossings (see AffineCrossingSearch).
+  GuardBounds affineGuardBounds(const AffineGuard& guard) const;
+  /// The affine guard's time derivatives of the orders 2 … TAYLOR_ORDER − 1 at t, into `derivatives` from index 2
+  /// (the modes are moved to t). After affineGuardBounds.
+  void affineGuardDerivatives(const AffineGuard& guard, double t, double* derivatives) const;
   /// Length of a step (a fixed fraction of the fastest period).
   double step() const { return step_; }
   /// The state at t with its kinematics, the forces read off the modes: what calc_state followed by
@@ -74,10 +96,15 @@ private:
   void evaluateModes(double t) const;
   /// Rate of mode j at the instant of the modes: ṗ = ṗ0 − ω²∫p.
   double modalRate(Eigen::Index j) const { return modal_velocity_(j) - omega_(j) * omega_(j) * integral_(j); }
-  /// Value and rate of the relative velocity, the spring and the force of a row, from the modes.
-  std::pair<double, double> velocityAt(int row) const;
-  std::pair<double, double> springAt(int row) const;
-  std::pair<double, double> forceAt(int row) const;
+  /// Value, rate and acceleration of the relative velocity, the spring and the force of a row, from the modes
+  /// (without Full, value and rate only).
+  template <bool Full>
+  GuardValue velocityAt(int row) const;
+  template <bool Full>
+  GuardValue springAt(int row) const;
+  template <bool Full>
+  GuardValue forceAt(int row) const;
+
   /// Adds the modes' part (in position_ and integral_) to a state that holds base_state_, and to the forces.
   void addModes(OdeState& y, double* force) const;
 
@@ -96,6 +123,8 @@ private:
   Eigen::MatrixXd force_from_modes_;                 ///< F = G K^{-1/2} Q p, so I − I0 = G K^{-1/2} Q ∫p
   mutable Eigen::MatrixXd velocity_from_integrals_;  ///< W G K^{-1/2} Q (w − w0 = W G K^{-1/2} Q ∫p), made on demand
   mutable bool velocity_map_made_ = false;
+  /// Makes velocity_from_integrals_ once per state: only the affine search uses it.
+  void makeVelocityMap() const;
   Eigen::VectorXd start_velocity_;  ///< w at t0
 
   // Scratch of build, kept for its storage.
@@ -110,6 +139,7 @@ private:
   OdeState probe_;
   Eigen::VectorXd probe_force_;
   mutable Eigen::VectorXd position_, integral_;  ///< modes at the last evaluated instant
+  mutable double modes_time_ = 0.0;              ///< that instant (NaN when they hold something else)
 };
 
 }  // namespace detail

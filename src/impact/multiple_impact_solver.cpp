@@ -233,7 +233,12 @@ private:
     while (true)
     {
       evaluateKinematics(dynamics_, y_.data(), event_kinematics_);
-      const std::optional<Guard> guard = immediateTransition(event_kinematics_, contacts_, space_, settled_);
+      std::optional<Guard> guard;
+      if (std::any_of(contacts_.begin(), contacts_.end(),
+                      [](const ContactState& c) { return c.phase == NormalPhase::RigidLink && c.slipping; }))
+        guard = jammedLink(dynamics_, event_kinematics_, contacts_, space_, settled_);
+      if (!guard)
+        guard = immediateTransition(event_kinematics_, contacts_, space_, settled_);
       if (!guard)
         break;
       if (auto status = fire(*guard); !status)
@@ -408,7 +413,7 @@ private:
     const std::vector<Guard>& guards = armedGuards(contacts_, space_, guards_);
     affine_guards_.clear();
     for (const Guard& guard : guards)
-      affine_guards_.push_back(affineForm(guard, space_));
+      affine_guards_.push_back(affineForm(guard, contacts_, space_));
     const bool all_affine = std::all_of(affine_guards_.begin(), affine_guards_.end(),
                                         [](const std::optional<AffineGuard>& form) { return form.has_value(); });
     if (!all_affine || options_.record_samples || !affine_search_.start(closed_form_, affine_guards_, t_))

@@ -1,6 +1,7 @@
 #include "state_transitions.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace billiard_shot_planner
 {
@@ -60,52 +61,28 @@ void startSlip(ContactState& contact, const Eigen::Vector2d& direction, double* 
   s[2] = direction.y();
 }
 
-bool isChattering(const ContactState& contact, double deformation, const ChatterLimit& chatter)
+/// Round-offs of a contact's velocity (velocityRoundOff) beyond which its approach is one: twice for the impulses
+/// that may grow while it is apart, twice again for a guard read on either side of its noise.
+constexpr double REACTIVATION_ROUND_OFFS = 4.0;
+
+/// The contact stops touching: inactive, its springs relaxed, and reactivated only by an approach beyond the
+/// round-off of its velocity. With impulses of 3e3 (a heavy cue jammed on the ball) that round-off is 2e-11; read
+/// against VELOCITY_TOLERANCE alone, the noise of a released cue tip's velocity reactivates it, its link pulls and
+/// is released, and so on for 200 000 events.
+void stopTouching(std::size_t index, double* y, ContactState& contact, const ContactSpace& space)
 {
-  if (contact.restitution == 0.0)
-    return true;
-  const double stored_energy = 0.5 * contact.stiffness * deformation * deformation;
-  const bool repeated = contact.ends_of_compression >= 3;
-  const bool negligible = repeated && stored_energy <= chatter.energy;
-  const bool unresolved = repeated && std::abs(deformation) <= chatter.deformation;
-  return negligible || unresolved || contact.stiffness / contact.original_stiffness >= chatter.stiffness_growth;
+  contact.phase = NormalPhase::Inactive;
+  contact.slipping = false;
+  contact.jammed = false;
+  relaxSprings(y, space, index);
+  contact.reactivation_speed =
+      std::max(VELOCITY_TOLERANCE, REACTIVATION_ROUND_OFFS * velocityRoundOff(space, y, space.offset[index]));
 }
 
-TransitionEvents endCompression(std::size_t index, double* y, std::vector<ContactState>& contacts,
-                                const ContactSpace& space, const ChatterLimit& chatter)
-{
-  ContactState& contact = contacts[index];
-  double* s = springs(y, space, index);
-  if (s[0] >= 0.0)
-  {
-    // Touched without ever loading: the bodies simply move apart.
-    contact.phase = NormalPhase::Inactive;
-    relaxSprings(y, space, index);
-    return {ContactEventType::Separation};
-  }
-  ++contact.ends_of_compression;
-  if (isChattering(contact, s[0], chatter))
-  {
-    // Limit of infinite stiffness: the remaining normal strain energy (negligible, or lost when e = 0) is dropped.
-    contact.rigid = true;
-    contact.chattered = contact.restitution > 0.0;
-    contact.phase = NormalPhase::RigidLink;
-    s[0] = 0.0;
-    return {ContactEventType::EndOfCompression, ContactEventType::RigidLink};
-  }
-  // Paper §3.3 (i): k ← k/e², E ← e²E, so s_n ← e² s_n and the force stays continuous.
-  const double e2 = contact.restitution * contact.restitution;
-  contact.stiffness /= e2;
-  s[0] *= e2;
-  contact.phase = NormalPhase::Restitution;
-  return {ContactEventType::EndOfCompression};
-}
-
-/// A contact of infinite stiffness (a former chattering or plastic one) that is approached at a finite speed: an
-/// instantaneous impact of that contact alone, v_n ← −e v_n, during which the other links keep their normal
-/// velocities and every compliant force is finite (so gives no impulse). Returns whether it separates at once.
-bool rigidImpact(std::size_t index, const Kinematics& kinematics, double* y, const std::vector<ContactState>& contacts,
-                 const ContactSpace& space)
+/// Changes a rigid contact's normal velocity by `change` with an impulse along the rigid normals alone: the other links
+/// keep their normal velocities and every compliant force is finite (so gives no impulse).
+void rigidImpulse(std::size_t index, double change, double* y, const std::vector<ContactState>& contacts,
+                  const ContactSpace& space)
 {
   std::vector<int> rows{space.offset[index]};
   for (std::size_t i = 0; i < contacts.size(); ++i)
@@ -116,13 +93,73 @@ bool rigidImpact(std::size_t index, const Kinematics& kinematics, double* y, con
   for (Eigen::Index a = 0; a < n; ++a)
     for (Eigen::Index b = 0; b < n; ++b)
       block(a, b) = space.delassus(rows[a], rows[b]);
-  Eigen::VectorXd change = Eigen::VectorXd::Zero(n);
-  const double approach = kinematics.velocity(rows[0]);
-  change(0) = -(1.0 + contacts[index].restitution) * approach;
-  const Eigen::VectorXd impulse = block.completeOrthogonalDecomposition().solve(change);
+  Eigen::VectorXd target = Eigen::VectorXd::Zero(n);
+  target(0) = change;
+  const Eigen::VectorXd impulse = block.completeOrthogonalDecomposition().solve(target);
   for (Eigen::Index a = 0; a < n; ++a)
     y[rows[a]] += impulse(a);
-  return contacts[index].restitution > 0.0;
+}
+
+/// Makes a contact a rigid link at zero normal velocity. A link keeps its normal velocity for as long as it holds,
+/// and its force does work at that velocity: made where an end of compression found late leaves it separating at
+/// 2.5e-5 (a light ball on a plastic table under a heavy one), the link pushes the heavy ball out with 3e-5 more
+/// energy than it came in with (project issue 23). The limit of infinite stiffness has v_n = 0 (paper Theorem 12;
+/// an end of compression is where v_n crosses zero), so what is left, the event's location error, is removed by a
+/// plastic impulse of the contact: −½ v_n²/W_eff of kinetic energy, never a gain.
+void makeRigidLink(std::size_t index, const Kinematics& kinematics, double* y, std::vector<ContactState>& contacts,
+                   const ContactSpace& space)
+{
+  const double normal_velocity = kinematics.velocity(space.offset[index]);
+  if (normal_velocity != 0.0)
+    rigidImpulse(index, -normal_velocity, y, contacts, space);
+  contacts[index].phase = NormalPhase::RigidLink;
+}
+
+bool isChattering(const ContactState& contact, double deformation, const ChatterLimit& chatter)
+{
+  if (contact.restitution == 0.0)
+    return true;
+  const double stored_energy = 0.5 * contact.stiffness * deformation * deformation;
+  const bool repeated = contact.ends_of_compression >= 3;
+  const bool negligible = repeated && stored_energy <= chatter.energy;
+  const bool unresolved = repeated && std::abs(deformation) <= chatter.deformation;
+  // The bound is on the stiffness the restitution would have, k/e²: a phase that stiff is the rigid limit already,
+  // and no method resolves it. Checked against the stiffness before it grows, a nearly plastic contact (e = 4e-6)
+  // restitutes at 1e21 after its second end of compression, and, reactivated at once, presses with a deformation of
+  // 1e-27 whose end no method finds, stepping at its period to the step bound; e = 1e-12 restitutes at 1e24 after
+  // its first, and a cue strike's energy rises by 29 %.
+  const double restitution_stiffness = contact.stiffness / (contact.restitution * contact.restitution);
+  return negligible || unresolved || restitution_stiffness / contact.original_stiffness >= chatter.stiffness_growth;
+}
+
+TransitionEvents endCompression(std::size_t index, const Kinematics& kinematics, double* y,
+                                std::vector<ContactState>& contacts, const ContactSpace& space,
+                                const ChatterLimit& chatter)
+{
+  ContactState& contact = contacts[index];
+  double* s = springs(y, space, index);
+  if (s[0] >= 0.0)
+  {
+    // Touched without ever loading: the bodies simply move apart.
+    stopTouching(index, y, contact, space);
+    return {ContactEventType::Separation};
+  }
+  ++contact.ends_of_compression;
+  if (isChattering(contact, s[0], chatter))
+  {
+    // Limit of infinite stiffness: the remaining normal strain energy (negligible, or lost when e = 0) is dropped.
+    contact.rigid = true;
+    contact.chattered = contact.restitution > 0.0;
+    s[0] = 0.0;
+    makeRigidLink(index, kinematics, y, contacts, space);
+    return {ContactEventType::EndOfCompression, ContactEventType::RigidLink};
+  }
+  // Paper §3.3 (i): k ← k/e², E ← e²E, so s_n ← e² s_n and the force stays continuous.
+  const double e2 = contact.restitution * contact.restitution;
+  contact.stiffness /= e2;
+  s[0] *= e2;
+  contact.phase = NormalPhase::Restitution;
+  return {ContactEventType::EndOfCompression};
 }
 
 TransitionEvents activate(std::size_t index, const Kinematics& kinematics, double* y,
@@ -131,9 +168,27 @@ TransitionEvents activate(std::size_t index, const Kinematics& kinematics, doubl
   ContactState& contact = contacts[index];
   relaxSprings(y, space, index);
   const double approach = kinematics.velocity(space.offset[index]);
-  if (contact.rigid && approach < -VELOCITY_TOLERANCE && rigidImpact(index, kinematics, y, contacts, space))
+  if (contact.rigid && -contact.restitution * approach > contact.reactivation_speed)
+  {
+    // A contact of infinite stiffness (a former chattering one) approached at a finite speed: an instantaneous
+    // impact of that contact alone, v_n ← −e v_n, and it separates at once.
+    rigidImpulse(index, -(1.0 + contact.restitution) * approach, y, contacts, space);
+    stopTouching(index, y, contact, space);
     return {ContactEventType::Reactivation, ContactEventType::Separation};
-  contact.phase = contact.rigid ? NormalPhase::RigidLink : NormalPhase::Compression;
+  }
+  // A plastic impact, a graze within round-off, or a rebound no faster than an approach the contact can resolve:
+  // pressed together, such a contact is approached again at once, and again, a sequence whose limit is the link
+  // (paper Theorem 12).
+  if (contact.rigid)
+  {
+    // Its force is the constraint's from the first instant, while its tangential spring is relaxed: it sticks until
+    // the spring reaches the cone, μf/κ. Sliding at once, it would stand on a cone of that length, whose energy
+    // ½(μf)²/κ nothing had paid for.
+    makeRigidLink(index, kinematics, y, contacts, space);
+    contact.slipping = false;
+    return {ContactEventType::Reactivation};
+  }
+  contact.phase = NormalPhase::Compression;
   chooseInitialMode(contact, kinematics.velocity, space, index);
   if (contact.slipping)
     startSlip(contact, contact.slip_direction, y, space, index, /*from_relaxed_springs=*/true);
@@ -154,6 +209,16 @@ double quantityAt(const AffineGuard& guard, const Kinematics& kinematics, const 
   return 0.0;
 }
 }  // namespace
+
+double velocityRoundOff(const ContactSpace& space, const double* impulses, int row)
+{
+  // The worst case of a sum of 16 terms, against the sum of their magnitudes.
+  constexpr double SUM_ROUND_OFF = 16.0 * std::numeric_limits<double>::epsilon();
+  double magnitude = std::abs(space.w0(row));
+  for (Eigen::Index k = 0; k < space.size; ++k)
+    magnitude += std::abs(space.delassus(row, k) * impulses[k]);
+  return SUM_ROUND_OFF * magnitude;
+}
 
 void evaluateKinematics(const ContactDynamics& dynamics, const double* y, Kinematics& kinematics)
 {
@@ -184,7 +249,7 @@ const std::vector<Guard>& armedGuards(const std::vector<ContactState>& contacts,
         guards.push_back({i, ContactEventType::LinkRelease});
         break;
     }
-    if (space.dim[i] == 3)
+    if (space.dim[i] == 3 && (contacts[i].slipping || !contacts[i].jammed))
       guards.push_back({i, contacts[i].slipping ? ContactEventType::SlipToStick : ContactEventType::StickToSlip});
     if (contacts[i].followsSlip())
       guards.push_back({i, ContactEventType::StickToSlip, /*releases_direction=*/true});
@@ -192,7 +257,8 @@ const std::vector<Guard>& armedGuards(const std::vector<ContactState>& contacts,
   return guards;
 }
 
-std::optional<AffineGuard> affineForm(const Guard& guard, const ContactSpace& space)
+std::optional<AffineGuard> affineForm(const Guard& guard, const std::vector<ContactState>& contacts,
+                                      const ContactSpace& space)
 {
   using Quantity = AffineGuard::Quantity;
   const int row = space.offset[guard.contact];
@@ -207,7 +273,7 @@ std::optional<AffineGuard> affineForm(const Guard& guard, const ContactSpace& sp
     case ContactEventType::Reactivation:
       // Approaching by more than round-off: a released rigid link left touching at v_n = 0 with a force of 1e-18
       // would otherwise cross zero again at the same instant and link and release for ever (random chains).
-      return AffineGuard{Quantity::Velocity, row, -1.0, -VELOCITY_TOLERANCE};
+      return AffineGuard{Quantity::Velocity, row, -1.0, -contacts[guard.contact].reactivation_speed};
     case ContactEventType::Separation:
       return AffineGuard{Quantity::Spring, row, 1.0, 0.0};
     case ContactEventType::LinkRelease:
@@ -223,7 +289,7 @@ std::optional<AffineGuard> affineForm(const Guard& guard, const ContactSpace& sp
 double guardValue(const Guard& guard, const Kinematics& kinematics, const std::vector<ContactState>& contacts,
                   const ContactDynamics& dynamics, const ContactSpace& space)
 {
-  if (const std::optional<AffineGuard> affine = affineForm(guard, space))
+  if (const std::optional<AffineGuard> affine = affineForm(guard, contacts, space))
     return affine->sign * quantityAt(*affine, kinematics, space) + affine->offset;
   const int row = space.offset[guard.contact];
   const ContactState& contact = contacts[guard.contact];
@@ -244,15 +310,13 @@ TransitionEvents applyTransition(const Guard& guard, const Kinematics& kinematic
   switch (guard.type)
   {
     case ContactEventType::EndOfCompression:
-      return endCompression(guard.contact, y, contacts, space, chatter);
+      return endCompression(guard.contact, kinematics, y, contacts, space, chatter);
     case ContactEventType::RestartOfCompression:
       contact.phase = NormalPhase::Compression;  // paper §3.3 (ii): k kept
       break;
     case ContactEventType::Separation:
     case ContactEventType::LinkRelease:
-      contact.phase = NormalPhase::Inactive;
-      contact.slipping = false;
-      relaxSprings(y, space, guard.contact);
+      stopTouching(guard.contact, y, contact, space);
       break;
     case ContactEventType::Reactivation:
       return activate(guard.contact, kinematics, y, contacts, space);  // paper §3.3 (iii): k kept
@@ -278,11 +342,14 @@ TransitionEvents applyTransition(const Guard& guard, const Kinematics& kinematic
     case ContactEventType::SlipToStick:
       contact.slipping = false;
       {
-        // While sliding the friction came from the normal force; from now on the spring holds that force.
+        // While sliding the friction came from the normal force; from now on the spring holds that force. A link
+        // that jams while it pulls (jammedLink) held none: −μfŝ with f < 0 is no friction, and as a spring it would
+        // hold energy nothing paid for.
         double* spring = springs(y, space, guard.contact);
         const int row = space.offset[guard.contact];
-        spring[1] = -kinematics.force(row + 1) / contact.kappa;
-        spring[2] = -kinematics.force(row + 2) / contact.kappa;
+        const bool holds = kinematics.force(row) > 0.0;
+        spring[1] = holds ? -kinematics.force(row + 1) / contact.kappa : 0.0;
+        spring[2] = holds ? -kinematics.force(row + 2) / contact.kappa : 0.0;
       }
       break;
     case ContactEventType::RigidLink:
@@ -304,10 +371,10 @@ bool nothingCanLoad(const Kinematics& kinematics, const std::vector<ContactState
   for (std::size_t i = 0; i < contacts.size(); ++i)
   {
     const int row = space.offset[i];
-    // An inactive contact loads only by reactivating, which takes an approach faster than VELOCITY_TOLERANCE; with
+    // An inactive contact loads only by reactivating, which takes an approach faster than its reactivation speed; with
     // RELEASE_VELOCITY for it too, one approaching at 7e-13 (a random chain's far balls) kept a contact touching at
     // rest from being let go, and the state ran to the step bound.
-    const double approach = contacts[i].active() ? RELEASE_VELOCITY : VELOCITY_TOLERANCE;
+    const double approach = contacts[i].active() ? RELEASE_VELOCITY : contacts[i].reactivation_speed;
     if (kinematics.velocity(row) < -approach)
       return false;
     const bool sticking = contacts[i].active() && space.dim[i] == 3 && !contacts[i].slipping;
@@ -332,9 +399,9 @@ std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std
     switch (contacts[i].phase)
     {
       case NormalPhase::Inactive:
-        if (v_n < -VELOCITY_TOLERANCE)
+        if (v_n < -contacts[i].reactivation_speed)
           return Guard{i, ContactEventType::Reactivation};
-        if (v_n <= VELOCITY_TOLERANCE)
+        if (v_n <= contacts[i].reactivation_speed)
         {
           // Grazing: the bodies touch with zero normal velocity; they stay in contact if they are pushed together.
           if (acceleration.size() == 0)
@@ -352,9 +419,45 @@ std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std
           return Guard{i, ContactEventType::EndOfCompression};
         [[fallthrough]];
       case NormalPhase::Restitution:
+        // Relaxed and opening: its spring would pull from now on. A state can start so, its separation's guard
+        // above zero by round-off where another transition takes the instant (a cue tip's link released as the
+        // cloth relaxes: the cloth would pull the ball down, 1e-4 of the strike's energy).
+        if (contacts[i].phase == NormalPhase::Restitution && s_n >= 0.0 && v_n > VELOCITY_TOLERANCE)
+          return Guard{i, ContactEventType::Separation};
         if (s_n >= 0.0 && std::abs(v_n) <= RELEASE_VELOCITY && nothingCanLoad(kinematics, contacts, space))
           return Guard{i, ContactEventType::Separation};
         break;
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<Guard> jammedLink(ContactDynamics& dynamics, const Kinematics& kinematics,
+                                std::vector<ContactState>& contacts, const ContactSpace& space,
+                                const std::vector<bool>& settled)
+{
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+  {
+    ContactState& contact = contacts[i];
+    if (settled[i] || contact.phase != NormalPhase::RigidLink || !contact.slipping)
+      continue;
+    const int row = space.offset[i];
+    bool jams = dynamics.slidingSpeed(i, kinematics.y, kinematics.velocity, kinematics.force) < -VELOCITY_TOLERANCE;
+    if (!jams && kinematics.force(row) <= FORCE_TOLERANCE)
+    {
+      // Released, would it approach? Its grazing acceleration with the contact inactive (as a released one is
+      // reactivated by immediateTransition).
+      contact.phase = NormalPhase::Inactive;
+      dynamics.refresh();
+      const Eigen::VectorXd released = dynamics.forces(kinematics.y);
+      contact.phase = NormalPhase::RigidLink;
+      dynamics.refresh();
+      jams = space.delassus.row(row).dot(released) < -FORCE_TOLERANCE;
+    }
+    if (jams)
+    {
+      contact.jammed = true;
+      return Guard{i, ContactEventType::SlipToStick};
     }
   }
   return std::nullopt;

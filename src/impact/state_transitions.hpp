@@ -43,7 +43,8 @@ struct AffineGuard
 };
 
 /// The guard's affine form, if it has one (the tangential and direction guards do not).
-std::optional<AffineGuard> affineForm(const Guard& guard, const ContactSpace& space);
+std::optional<AffineGuard> affineForm(const Guard& guard, const std::vector<ContactState>& contacts,
+                                      const ContactSpace& space);
 
 /// Guard values (dimensionless) within round-off of zero at the start of a state: the contact that has just switched
 /// starts its new guard at zero, but the state it switched at was found by the old state's dynamics and is re-read by
@@ -68,6 +69,10 @@ const std::vector<Guard>& armedGuards(const std::vector<ContactState>& contacts,
 /// g such that the transition fires when g rises through zero.
 double guardValue(const Guard& guard, const Kinematics& kinematics, const std::vector<ContactState>& contacts,
                   const ContactDynamics& dynamics, const ContactSpace& space);
+
+/// Round-off of the velocity of contact-space row `row` from the impulses, w = w0 + W I (dimensionless): large where
+/// the impulses are, against a velocity that is their difference (a ball between a heavy cue and the cloth).
+double velocityRoundOff(const ContactSpace& space, const double* impulses, int row);
 
 /// When a contact's sequence of compressions is taken to be infinite and replaced by its limit.
 struct ChatterLimit
@@ -95,6 +100,18 @@ TransitionEvents applyTransition(const Guard& guard, const Kinematics& kinematic
 /// nothing can load it any more. Contacts marked `settled` are left as they are.
 std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std::vector<ContactState>& contacts,
                                          const ContactSpace& space, const std::vector<bool>& settled);
+
+/// A sliding rigid link that cannot slide, and so jams: it sticks (a slip-to-stick transition, returned), and
+/// stays stuck while it holds (ContactState::jammed). A compliant contact slips only with a sliding speed
+/// σ = ŝ·v_t + μη²v_n ≥ 0, continuous in its state; a link's force is a constraint's, and where friction couples
+/// the links' normals strongly enough (Painlevé's inconsistency: for one link, W_nn − μ W_n·ŝ < 0) its slip has
+/// σ = ŝ·v_t − μḟ/κ < 0, or needs a pulling force while, released, the contact would approach. Such a slip makes
+/// friction work with the motion, and the force and the energy grow without bound. The limit of a stiff contact
+/// that slips in that configuration is a jam: the normal force builds up until the contact sticks. Contacts marked
+/// `settled` are left as they are. May refresh `dynamics` (it restores what it changes).
+std::optional<Guard> jammedLink(ContactDynamics& dynamics, const Kinematics& kinematics,
+                                std::vector<ContactState>& contacts, const ContactSpace& space,
+                                const std::vector<bool>& settled);
 
 /// Contacts that touch at rest when the impact starts (a ball on the cloth under the cue) take part only if the
 /// impact presses them together: those that the approaching contacts pull apart (a draw shot lifting the ball) or

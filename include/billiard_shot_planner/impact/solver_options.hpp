@@ -17,7 +17,8 @@ struct SolverOptions
   /// after it has already ended compression at least twice, is taken to chatter: the solver finishes with the
   /// limit of the infinite sequence, a rigid link while its force stays compressive (paper Theorem 12).
   double chatter_energy_fraction = 1e-20;
-  /// The same limit is taken once a contact's stiffness has grown by this factor (k/k̄ = e^{-2j}).
+  /// The same limit is taken once the stiffness a contact's restitution would have has grown by this factor
+  /// (k/k̄ = e^{-2j} after its j-th end of compression): a restitution that stiff is the rigid limit already.
   double chatter_stiffness_growth = 1e14;
   /// And, in a numerically integrated state, once its deformation at the end of compression (normalised) is below
   /// this multiple of absolute_tolerance: the integrator holds a spring only to that tolerance, so later cycles would
