@@ -225,17 +225,21 @@ Expected<json> solveBallMotion(const json& request, const SolverOptions& options
 
 Expected<json> solveShot(const json& request, const SolverOptions& options)
 {
-  auto answer = solveStrikeFromJson(request, options);
-  if (!answer)
-    return answer.error();
-  const CueStrike& s = answer.value().strike;
-  const CueStrikeResult& result = answer.value().result;
+  // Every field is read, the table file included, before the strike is solved: bad input costs nothing.
+  auto strike = cueStrikeFromJson(request);
+  if (!strike)
+    return strike.error();
+  const CueStrike& s = strike.value();
   auto setup = motionSetup(request, options, &s.table_contact, Ball{s.ball_mass, s.ball_radius});
   if (!setup)
     return setup.error();
   auto position = vector2(request, "ball_position");
   if (!position)
     return position.error();
+  auto solved = solve(s, options);
+  if (!solved)
+    return solved.error();
+  const CueStrikeResult& result = solved.value();
   auto trajectory = predict(setup.value(), position.value(), result.velocity, result.angular_velocity);
   if (!trajectory)
     return trajectory.error();

@@ -19,6 +19,25 @@ const std::pair<const char*, Solver> PROBLEMS[] = {
     {"ball_motion", json_io::solveBallMotion},        {"shot", json_io::solveShot},
 };
 
+/// `path` extended by one step: a key of an object, or an index of an array.
+std::string pathTo(const std::string& path, const std::string& key)
+{
+  std::string extended = path;
+  if (!extended.empty())
+    extended += '.';
+  extended += key;
+  return extended;
+}
+
+std::string pathTo(const std::string& path, std::size_t index)
+{
+  std::string extended = path;
+  extended += '[';
+  extended += std::to_string(index);
+  extended += ']';
+  return extended;
+}
+
 /// The path of the first number in `value` that is NaN or infinite (JSON would write it as null), if any.
 std::optional<std::string> nonFinitePath(const json& value, const std::string& path)
 {
@@ -26,11 +45,11 @@ std::optional<std::string> nonFinitePath(const json& value, const std::string& p
     return path.empty() ? "answer" : path;
   if (value.is_object())
     for (const auto& [key, item] : value.items())
-      if (auto found = nonFinitePath(item, path.empty() ? key : path + "." + key))
+      if (auto found = nonFinitePath(item, pathTo(path, key)))
         return found;
   if (value.is_array())
     for (std::size_t i = 0; i < value.size(); ++i)
-      if (auto found = nonFinitePath(value[i], path + "[" + std::to_string(i) + "]"))
+      if (auto found = nonFinitePath(value[i], pathTo(path, i)))
         return found;
   return std::nullopt;
 }

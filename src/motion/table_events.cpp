@@ -172,7 +172,7 @@ std::optional<NoseHit> airborneContact(const MotionSegment& segment, const Nose&
     const double u = nose.edge - nose.side * centre(nose.axis), w = centre.z() - table.cushion_height;
     return radius * radius - u * u - w * w;
   };
-  auto contactAt = [&](double tau)
+  auto contact_at = [&](double tau)
   { return contactOf(airborneApproach(segment, nose, table, radius, tau), horizon - tau); };
 
   double start = 0.0, f_start = 0.0;
@@ -201,7 +201,7 @@ std::optional<NoseHit> airborneContact(const MotionSegment& segment, const Nose&
     if (f_lo <= 0.0 && f_hi > 0.0)
     {
       const double tau = locateEvent(overlap, lo, hi, f_lo, f_hi);
-      if (const auto contact = contactAt(tau))
+      if (const auto contact = contact_at(tau))
         return NoseHit{tau, *contact};
       // A rise of round-off, or a touch slower than REST_SPEED that turns away: no contact.
     }
@@ -214,7 +214,7 @@ std::optional<NoseHit> airborneContact(const MotionSegment& segment, const Nose&
     return NoseHit{*passes, NoseContact::Over};
   // The centre reaches the nose line with the ball's bottom below the nose, an overlap no sample resolved: it must
   // not go through, so it meets the nose there.
-  const auto contact = contactAt(*passes);
+  const auto contact = contact_at(*passes);
   return NoseHit{*passes, contact ? *contact : NoseContact::Pressed};
 }
 }  // namespace

@@ -213,3 +213,25 @@ TEST(ImpulseCurve, InsideTheEllipseAndEnergyConstantBetweenEndsOfCompression)
     }
   }
 }
+
+TEST(BallBallTable, ChatterNearTiesEndAsTheExactSequence)
+{
+  // Two collisions whose chatter ends near a tie (project issue 23). Against an exact piecewise solution the first
+  // chatters 22 cycles into the rigid-link limit, v1 = v2 = 0.5420958; the closed form stopped after 9 cycles with
+  // v1 − v2 = 1e-4. The second has a short S1 the closed form skipped (4e-8 off). Both now as the exact sequence:
+  // the first at the limit to the 7 digits given, the second as integration at a tight tolerance.
+  const auto tie = solved({0.7445701166465388, 0.7333162515966738, 0.5484104959910449, 0.4352675225021643,
+                           0.5231094637743532, -1.974669286548985});
+  EXPECT_TRUE(tie.converged);
+  EXPECT_NEAR(tie.velocity(0), 0.5420958, 1e-7);
+  EXPECT_NEAR(tie.velocity(1), 0.5420958, 1e-7);
+  const bsp::BallBallTable short_s1{3.1127486850161477, 1.4599681378356624, 0.17218651053185755,
+                                    0.614831350220032,  0.5410660380162491, -0.9679309238210905};
+  bsp::SolverOptions integrated;
+  integrated.closed_form_linear_phases = false;
+  integrated.relative_tolerance = 1e-13;
+  integrated.absolute_tolerance = 1e-15;
+  const auto closed = solved(short_s1), reference = solved(short_s1, integrated);
+  EXPECT_EQ(closed.states.size(), reference.states.size());
+  EXPECT_LE((closed.velocity - reference.velocity).lpNorm<Eigen::Infinity>(), 1e-9);
+}
