@@ -1,7 +1,12 @@
 #pragma once
 
-// Shots shared by the ROS tests: the paper's massé shot and a follow shot, as core placements (table frame).
+// Shots shared by the ROS tests: the paper's massé shot and a follow shot, as core placements (table frame), and
+// a placement as the service's request.
+#include <billiard_shot_planner/PredictShot.h>
+
 #include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <string>
 
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
 
@@ -36,6 +41,28 @@ inline billiard_shot_planner::CuePlacement follow()
   cue.speed = 2.0;
   cue.ball = centre.head<2>();
   return cue;
+}
+
+/// A placement as the service's request (both in `frame`, stamp 0: the latest transform).
+inline billiard_shot_planner::PredictShot::Request toRequest(const billiard_shot_planner::CuePlacement& cue,
+                                                             const std::string& frame = "table")
+{
+  billiard_shot_planner::PredictShot::Request r;
+  r.cue_pose.header.frame_id = frame;
+  r.cue_pose.pose.position.x = cue.tip.x();
+  r.cue_pose.pose.position.y = cue.tip.y();
+  r.cue_pose.pose.position.z = cue.tip.z();
+  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), cue.direction);
+  r.cue_pose.pose.orientation.x = q.x();
+  r.cue_pose.pose.orientation.y = q.y();
+  r.cue_pose.pose.orientation.z = q.z();
+  r.cue_pose.pose.orientation.w = q.w();
+  r.cue_speed = cue.speed;
+  r.ball_position.header.frame_id = frame;
+  r.ball_position.point.x = cue.ball.x();
+  r.ball_position.point.y = cue.ball.y();
+  r.ball_position.point.z = 0.0286;
+  return r;
 }
 
 }  // namespace shot_fixtures

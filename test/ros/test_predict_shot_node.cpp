@@ -30,25 +30,7 @@ namespace
 {
 const std::string SERVICE = "/shot_predictor/predict_shot";
 
-bsp::PredictShot::Request toRequest(const bsp::CuePlacement& cue, const std::string& frame = "table")
-{
-  bsp::PredictShot::Request r;
-  r.cue_pose.header.frame_id = frame;
-  r.cue_pose.pose.position.x = cue.tip.x();
-  r.cue_pose.pose.position.y = cue.tip.y();
-  r.cue_pose.pose.position.z = cue.tip.z();
-  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), cue.direction);
-  r.cue_pose.pose.orientation.x = q.x();
-  r.cue_pose.pose.orientation.y = q.y();
-  r.cue_pose.pose.orientation.z = q.z();
-  r.cue_pose.pose.orientation.w = q.w();
-  r.cue_speed = cue.speed;
-  r.ball_position.header.frame_id = frame;
-  r.ball_position.point.x = cue.ball.x();
-  r.ball_position.point.y = cue.ball.y();
-  r.ball_position.point.z = 0.0286;
-  return r;
-}
+using shot_fixtures::toRequest;
 
 bsp::PredictShot::Response call(const bsp::PredictShot::Request& request)
 {
