@@ -30,6 +30,8 @@ constexpr int MAX_CONTACTS = 6;
 /// costs 5-25 us natively but about 0.2 ms under the sanitizers (50 000 steps took 8-11 s, over libFuzzer's
 /// -timeout=10; the engine's default is 300 000). 0 in the input means this cap.
 constexpr std::uint32_t MAX_STEPS_CAP = 10000;
+/// The wall-clock budget of every fuzzed solve, s (SolverOptions::max_seconds; the library's default is 10).
+constexpr double MAX_SECONDS_CAP = 2.0;
 
 /// Selector byte of a double: [0, 160) a decimal q/1000 (q a 16-bit signed integer), [160, 200) q·2^e with
 /// e in [-64, 64], [200, 240) the raw 64 bits (NaN, infinities, subnormals), [240, 256) SPECIALS.
@@ -175,6 +177,8 @@ inline SolverOptions readOptions(FuzzedDataProvider& in)
   options.max_events = max_events == 0 ? options.max_events : max_events;
   const auto max_steps = in.ConsumeIntegralInRange<std::uint32_t>(0, MAX_STEPS_CAP);
   options.max_steps = max_steps == 0 ? MAX_STEPS_CAP : max_steps;
+  // Well inside libFuzzer's -timeout=10 under the sanitizers: a solve cut by its budget is an answer, not a hang.
+  options.max_seconds = MAX_SECONDS_CAP;
   if (in.ConsumeBool())
   {
     options.chatter_energy_fraction = readDouble(in);

@@ -45,9 +45,18 @@ std::string firstNonFinite(const json& value, const std::string& path)
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  const json request = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  json request = json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (request.is_discarded())
     return 0;  // impact_solve: "input is not valid JSON", exit code 2
+  // Every solve's wall-clock budget well inside libFuzzer's -timeout=10 under the sanitizers (the library's default
+  // is 10 s): a solve cut by its budget is an answer, not a hang. A request's own budget is kept when smaller.
+  if (request.is_object() && (!request.contains("solver") || request["solver"].is_object()))
+  {
+    json& solver = request["solver"];
+    if (!solver.contains("max_seconds") || !solver["max_seconds"].is_number() ||
+        !(solver["max_seconds"].get<double>() <= 2.0))
+      solver["max_seconds"] = 2.0;
+  }
   const auto result = billiard_shot_planner::solveJsonProblem(request);
   static const bool verbose = std::getenv("FUZZ_VERBOSE") != nullptr;
   if (!result)
