@@ -3,7 +3,7 @@
 // The timed solve loop of the Google Benchmark programs, over the problems of bench_problems.hpp.
 #include <benchmark/benchmark.h>
 
-#include "bench_problems.hpp"
+#include "../test/fixtures/bench_problems.hpp"
 
 namespace bench
 {

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "../test/fixtures/paper_masse.hpp"
 #include "bench_support.hpp"
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "paper_impulse_method.hpp"
@@ -38,7 +39,7 @@ void BM_ElasticChain10(benchmark::State& state)
 
 void BM_MasseStrike(benchmark::State& state)
 {
-  solveRepeatedly(state, bsp::paperMasseStrike());
+  solveRepeatedly(state, fixtures::paperMasseStrike());
 }
 void BM_Landing(benchmark::State& state)
 {
@@ -59,7 +60,8 @@ void BM_CushionHit(benchmark::State& state)
 /// clock and the quasi-steady slip save.
 void BM_MassePlainTime(benchmark::State& state)
 {
-  bench::timeSolves(state, bsp::paperMasseStrike(), bench::plainIntegration(std::pow(10.0, -double(state.range(0)))));
+  bench::timeSolves(state, fixtures::paperMasseStrike(),
+                    bench::plainIntegration(std::pow(10.0, -double(state.range(0)))));
 }
 
 void BM_CushionHitPlainTime(benchmark::State& state)
@@ -101,7 +103,7 @@ void BM_Table1PaperMethod(benchmark::State& state)
 /// The paper's method on the massé strike; argument: −log10 of the impulse step in units of m_ball·v_cue.
 void BM_MassePaperMethod(benchmark::State& state)
 {
-  const bsp::CueStrike strike = bsp::paperMasseStrike();
+  const bsp::CueStrike strike = fixtures::paperMasseStrike();
   const bsp::ImpactProblem problem = bsp::makeImpactProblem(strike).value();
   const double step = std::pow(10.0, -static_cast<double>(state.range(0))) * strike.ball_mass * strike.cue_speed;
   paper_method::MasseResult result;

@@ -11,7 +11,8 @@
 #include <map>
 #include <string>
 
-#include "bench_problems.hpp"
+#include "../test/fixtures/bench_problems.hpp"
+#include "../test/fixtures/paper_masse.hpp"
 
 namespace
 {
@@ -29,7 +30,7 @@ const std::map<std::string, std::function<bool()>>& problems()
   static const std::map<std::string, std::function<bool()>> all = {
       {"table1", [] { return succeeded(bsp::solve(bench::table1())); }},
       {"chain10", [] { return succeeded(bsp::solve(bench::elasticChain(10))); }},
-      {"masse", [] { return succeeded(bsp::solve(bsp::paperMasseStrike())); }},
+      {"masse", [] { return succeeded(bsp::solve(fixtures::paperMasseStrike())); }},
       {"landing", [] { return succeeded(bsp::solve(bench::masseLanding())); }},
       {"cushion", [] { return succeeded(bsp::solve(bench::cushionHit())); }},
       {"trajectory",

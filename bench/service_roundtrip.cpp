@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "bench_problems.hpp"
+#include "../test/fixtures/bench_problems.hpp"
 
 namespace
 {

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "../test/fixtures/paper_masse.hpp"
 #include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
 #include "billiard_shot_planner/scenarios/ball_chain.hpp"
@@ -70,8 +71,8 @@ std::vector<Seed> seeds()
   BallChain wall{{1, 2, 1, 3}, {2, 1, 0, -0.5}, {1, 3, 1, 2}, {0.9, 0.5, 0, 1}, true};
   out.push_back({"chain4_wall_plastic", unwrap(makeImpactProblem(wall), "chain4_wall"), {}});
 
-  out.push_back({"masse_on_axis", unwrap(makeImpactProblem(paperMasseStrike()), "masse"), {}});
-  CueStrike draw = paperMasseStrike(Eigen::Vector3d(1, 0, 0));
+  out.push_back({"masse_on_axis", unwrap(makeImpactProblem(fixtures::paperMasseStrike()), "masse"), {}});
+  CueStrike draw = fixtures::paperMasseStrike(Eigen::Vector3d(1, 0, 0));
   draw.cue_end_mass = TYPICAL_CUE_END_MASS;
   draw.hit_normal = Eigen::Vector3d(-0.9165, 0.2, -0.4).normalized();
   draw.cue_contact = {0.75, 0.7, 1.2};

@@ -3,7 +3,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "../scenarios/surface_contact_checks.hpp"
+#include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 #include "billiard_shot_planner/scenarios/cushion_impact.hpp"
 #include "phase_dynamics.hpp"

@@ -1,6 +1,5 @@
 #include "billiard_shot_planner/motion/table.hpp"
-
-#include "../scenarios/surface_contact_checks.hpp"
+#include "billiard_shot_planner/core/validation.hpp"
 
 namespace billiard_shot_planner
 {

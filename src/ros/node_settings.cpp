@@ -1,4 +1,5 @@
-#include "billiard_shot_planner/ros/node_settings.hpp"
+#include "node_settings.hpp"
+#include "parameter_names.hpp"
 
 #include <cmath>
 
@@ -71,13 +72,13 @@ Expected<NodeSettings> readSettings(const ros::NodeHandle& pnh)
   pnh.param("sample_spacing", s.sample_spacing, s.sample_spacing);
   pnh.param("threads", s.threads, s.threads);
   for (const NamedParameter& parameter : numericParameters(s.shot))
-    pnh.param(parameter.name, *parameter.value, *parameter.value);
+    pnh.param(parameterName(parameter.name), *parameter.value, *parameter.value);
   // In order: what cannot be read, then the node's own settings, then the physics.
   if (Status status = readPockets(pnh, s.shot.table); !status)
     return status.error();
   if (Status status = readMotionChoices(pnh, s.shot.motion); !status)
     return status.error();
-  if (Status status = firstError({checkNodeSettings(s), validate(s.shot)}); !status)
+  if (Status status = firstError({checkNodeSettings(s), namedAsParameter(validate(s.shot))}); !status)
     return status.error();
   return s;
 }

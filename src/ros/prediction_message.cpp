@@ -1,4 +1,4 @@
-#include "billiard_shot_planner/ros/prediction_message.hpp"
+#include "prediction_message.hpp"
 
 #include "geometry_conversions.hpp"
 

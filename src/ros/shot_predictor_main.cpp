@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "billiard_shot_planner/ros/shot_predictor_node.hpp"
+#include "shot_predictor_node.hpp"
 
 int main(int argc, char** argv)
 {

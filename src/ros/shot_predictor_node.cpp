@@ -1,4 +1,4 @@
-#include "billiard_shot_planner/ros/shot_predictor_node.hpp"
+#include "shot_predictor_node.hpp"
 
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
@@ -7,9 +7,10 @@
 #include <stdexcept>
 
 #include "billiard_shot_planner/core/validation.hpp"
-#include "billiard_shot_planner/ros/prediction_message.hpp"
-#include "billiard_shot_planner/ros/trajectory_markers.hpp"
-#include "billiard_shot_planner/ros/tuning.hpp"
+#include "parameter_names.hpp"
+#include "prediction_message.hpp"
+#include "trajectory_markers.hpp"
+#include "tuning.hpp"
 
 namespace billiard_shot_planner
 {
@@ -87,8 +88,11 @@ Expected<ShotConfiguration> ShotPredictorNode::configurationFor(const PredictSho
     configuration = settings_.shot;
   }
   for (std::size_t i = 0; i < request.override_names.size(); ++i)
-    if (Status status = applyOverride(configuration, request.override_names[i], request.override_values[i]); !status)
-      return Error{status.error().code, "override " + status.error().field, status.error().message};
+  {
+    const std::string& name = request.override_names[i];
+    if (Status status = applyOverride(configuration, configurationPath(name), request.override_values[i]); !status)
+      return Error{status.error().code, "override " + parameterName(status.error().field), status.error().message};
+  }
   return configuration;
 }
 

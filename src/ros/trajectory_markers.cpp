@@ -1,4 +1,4 @@
-#include "billiard_shot_planner/ros/trajectory_markers.hpp"
+#include "trajectory_markers.hpp"
 
 #include "geometry_conversions.hpp"
 

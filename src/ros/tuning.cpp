@@ -1,4 +1,5 @@
-#include "billiard_shot_planner/ros/tuning.hpp"
+#include "tuning.hpp"
+#include "parameter_names.hpp"
 
 namespace billiard_shot_planner
 {
@@ -46,7 +47,7 @@ Expected<ShotConfiguration> applyTuning(ShotConfiguration configuration, const S
   if (t.rolling_model != "paper" && t.rolling_model != "pooltool")
     return invalidArgument("rolling_model", "must be paper or pooltool");
   configuration.motion.rolling_model = t.rolling_model == "paper" ? RollingModel::Paper : RollingModel::Pooltool;
-  if (Status status = validate(configuration); !status)
+  if (Status status = namedAsParameter(validate(configuration)); !status)
     return status.error();
   return configuration;
 }

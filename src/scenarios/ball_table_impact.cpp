@@ -1,7 +1,7 @@
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 
+#include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
-#include "surface_contact_checks.hpp"
 
 namespace billiard_shot_planner
 {

@@ -2,9 +2,9 @@
 
 #include <cmath>
 
+#include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
-#include "surface_contact_checks.hpp"
 
 namespace billiard_shot_planner
 {
@@ -82,22 +82,6 @@ Eigen::Vector3d worldImpulse(const ContactImpulse& impulse, const Eigen::Matrix3
 /// Upward speed, relative to the ball's speed, below which the ball is taken to stay on the cloth (round-off).
 constexpr double LEAVES_CLOTH_TOLERANCE = 1e-9;
 }  // namespace
-
-CueStrike paperMasseStrike(const Eigen::Vector3d& cue_direction)
-{
-  CueStrike s;
-  s.cue_mass = 0.5018;
-  s.cue_end_mass = CUE_HELD_ON_AXIS;
-  s.cue_direction = cue_direction;
-  s.cue_speed = 3.089095;
-  s.ball_mass = 0.17;
-  s.ball_radius = 0.0286;
-  s.hit_normal = {0.480151, -0.102889, 0.871131};
-  s.cue_contact = {0.656532, 0.7, 7.0};
-  s.table_contact = {0.51625, 0.152479, 10.0};
-  s.stiffness_ratio = 0.8;
-  return s;
-}
 
 Expected<Eigen::Vector3d> hitNormal(const Eigen::Vector3d& axis_point, const Eigen::Vector3d& direction,
                                     const Eigen::Vector3d& ball_centre, double ball_radius)

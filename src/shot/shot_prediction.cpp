@@ -1,20 +1,12 @@
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
+#include "billiard_shot_planner/core/validation.hpp"
 
 #include <algorithm>
-
-#include "../scenarios/surface_contact_checks.hpp"
 
 namespace billiard_shot_planner
 {
 namespace
 {
-/// Validation errors of the parts use dots ("table.cloth.friction"); parameters use slashes.
-Error withParameterName(Error error)
-{
-  std::replace(error.field.begin(), error.field.end(), '.', '/');
-  return error;
-}
-
 /// A part's error named as the configuration names the part ("max_time" of the motion is "motion.max_time").
 Status inPart(Status status, const std::string& part)
 {
@@ -34,8 +26,8 @@ Status validate(const ShotConfiguration& c)
                   validate(c.cue_contact, "cue_contact"), requireStiffnessRatio(c.stiffness_ratio, "stiffness_ratio"),
                   validate(c.table, "table"), inPart(validate(c.motion), "motion"), validate(c.solver, "solver")});
   if (!status)
-    return withParameterName(status.error());
-  return validateCushionHeight(c.table.cushion_height, c.ball_radius, "table/cushion_height");
+    return status;
+  return validateCushionHeight(c.table.cushion_height, c.ball_radius, "table.cushion_height");
 }
 
 std::vector<NamedParameter> numericParameters(ShotConfiguration& c)
@@ -44,29 +36,29 @@ std::vector<NamedParameter> numericParameters(ShotConfiguration& c)
           {"cue_end_mass", &c.cue_end_mass},
           {"ball_mass", &c.ball_mass},
           {"ball_radius", &c.ball_radius},
-          {"cue_contact/restitution", &c.cue_contact.restitution},
-          {"cue_contact/friction", &c.cue_contact.friction},
-          {"cue_contact/eta2", &c.cue_contact.eta2},
+          {"cue_contact.restitution", &c.cue_contact.restitution},
+          {"cue_contact.friction", &c.cue_contact.friction},
+          {"cue_contact.eta2", &c.cue_contact.eta2},
           {"stiffness_ratio", &c.stiffness_ratio},
-          {"table/length", &c.table.length},
-          {"table/width", &c.table.width},
-          {"table/cushion_height", &c.table.cushion_height},
-          {"table/cushion_stiffness_ratio", &c.table.cushion_stiffness_ratio},
-          {"table/cloth/restitution", &c.table.cloth.restitution},
-          {"table/cloth/friction", &c.table.cloth.friction},
-          {"table/cloth/eta2", &c.table.cloth.eta2},
-          {"table/cushion/restitution", &c.table.cushion.restitution},
-          {"table/cushion/friction", &c.table.cushion.friction},
-          {"table/cushion/eta2", &c.table.cushion.eta2},
-          {"motion/gravity", &c.motion.gravity},
-          {"motion/sliding_friction", &c.motion.sliding_friction},
-          {"motion/rolling_friction", &c.motion.rolling_friction},
-          {"motion/spinning_friction", &c.motion.spinning_friction},
-          {"motion/min_bounce_speed", &c.motion.min_bounce_speed},
-          {"motion/max_time", &c.motion.max_time},
-          {"solver/relative_tolerance", &c.solver.relative_tolerance},
-          {"solver/absolute_tolerance", &c.solver.absolute_tolerance},
-          {"solver/max_seconds", &c.solver.max_seconds}};
+          {"table.length", &c.table.length},
+          {"table.width", &c.table.width},
+          {"table.cushion_height", &c.table.cushion_height},
+          {"table.cushion_stiffness_ratio", &c.table.cushion_stiffness_ratio},
+          {"table.cloth.restitution", &c.table.cloth.restitution},
+          {"table.cloth.friction", &c.table.cloth.friction},
+          {"table.cloth.eta2", &c.table.cloth.eta2},
+          {"table.cushion.restitution", &c.table.cushion.restitution},
+          {"table.cushion.friction", &c.table.cushion.friction},
+          {"table.cushion.eta2", &c.table.cushion.eta2},
+          {"motion.gravity", &c.motion.gravity},
+          {"motion.sliding_friction", &c.motion.sliding_friction},
+          {"motion.rolling_friction", &c.motion.rolling_friction},
+          {"motion.spinning_friction", &c.motion.spinning_friction},
+          {"motion.min_bounce_speed", &c.motion.min_bounce_speed},
+          {"motion.max_time", &c.motion.max_time},
+          {"solver.relative_tolerance", &c.solver.relative_tolerance},
+          {"solver.absolute_tolerance", &c.solver.absolute_tolerance},
+          {"solver.max_seconds", &c.solver.max_seconds}};
 }
 
 Status applyOverride(ShotConfiguration& configuration, const std::string& name, double value)

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "../../bench/bench_problems.hpp"
+#include "../fixtures/bench_problems.hpp"
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "billiard_shot_planner/scenarios/cushion_impact.hpp"

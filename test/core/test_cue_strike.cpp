@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "../fixtures/paper_masse.hpp"
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "same_solution.hpp"
@@ -17,7 +18,7 @@ namespace
 /// The paper's massé inputs with the corrections of errata §5: m = 0.17 kg, r = 0.0286 m.
 bsp::CueStrike masse(const Eigen::Vector3d& cue_direction, double cue_eta2 = 7.0)
 {
-  bsp::CueStrike s = bsp::paperMasseStrike(cue_direction);
+  bsp::CueStrike s = fixtures::paperMasseStrike(cue_direction);
   s.cue_contact.eta2 = cue_eta2;
   return s;
 }
@@ -39,7 +40,7 @@ void expectRelative(const Eigen::Vector3d& actual, const Eigen::Vector3d& expect
 bsp::CueStrike sweptStrike(const Eigen::Vector3d& hit_normal, const Eigen::Vector3d& cue_direction, double cue_speed,
                            const bsp::SurfaceContact& cue_contact, double stiffness_ratio)
 {
-  bsp::CueStrike s = bsp::paperMasseStrike();
+  bsp::CueStrike s = fixtures::paperMasseStrike();
   s.hit_normal = hit_normal;
   s.cue_direction = cue_direction;
   s.cue_speed = cue_speed;
@@ -224,7 +225,7 @@ TEST(CueStrikeInvariants, RigidLinksThatSlideNeverGainEnergy)
     bsp::SurfaceContact cue, table;
     double stiffness_ratio;
   };
-  const bsp::CueStrike masse = bsp::paperMasseStrike();
+  const bsp::CueStrike masse = fixtures::paperMasseStrike();
   const Jam jams[] = {
       {{-0.7871762474244407, -0.61672086546683802, -0.0029882417255300731},
        {0.21503838406297757, -0.11679814832663615, 0.96959614578805564},

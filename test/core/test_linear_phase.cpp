@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "../fixtures/paper_masse.hpp"
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
 #include "billiard_shot_planner/scenarios/ball_chain.hpp"
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
@@ -85,7 +86,7 @@ TEST(LinearPhase, StickingContactsMatchNumericalIntegration)
   impact.angular_velocity = {1.5, 0.4, 0.0};
   impact.table = {0.5, 0.25, 7.0};
   expectSameSolution(impact, "stick then slip");
-  expectSameSolution(bsp::paperMasseStrike(), "massé strike");
+  expectSameSolution(fixtures::paperMasseStrike(), "massé strike");
 }
 
 TEST(LinearPhase, SlidingWithAFixedDirectionMatchesNumericalIntegration)

@@ -369,7 +369,7 @@ TEST(CushionHeight, ANoseTooLowToTurnBackABallRollingIntoItIsRefused)
   bsp::ShotConfiguration configuration;
   configuration.table.cushion_height = 0.0001;
   ASSERT_FALSE(bsp::validate(configuration).ok());
-  EXPECT_EQ(bsp::validate(configuration).error().field, "table/cushion_height");
+  EXPECT_EQ(bsp::validate(configuration).error().field, "table.cushion_height");
 }
 
 TEST(RailContact, InThePlaneABallRollingIntoALowNoseStaysOnTheTable)

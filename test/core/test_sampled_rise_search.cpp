@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "../../src/impact/sampled_rise_search.hpp"
+#include "../fixtures/paper_masse.hpp"
 #include "billiard_shot_planner/motion/table.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "billiard_shot_planner/scenarios/cushion_impact.hpp"
@@ -180,7 +181,7 @@ TEST(SampledRiseSearch, ACueStrikeGrazingItsFrictionConeKeepsEveryTransition)
   // A random strike (from a sweep of 1 500) whose tip chatters between stick and slip: one of its stick to slip
   // guards peaks above zero between two samples. Missed, the strike ended after 58 events instead of 60 and its
   // spin was off by 0.017 rad/s.
-  bsp::CueStrike strike = bsp::paperMasseStrike();
+  bsp::CueStrike strike = fixtures::paperMasseStrike();
   strike.hit_normal = {-0.067389426856898776, -0.35035973072050958, 0.93418773500691543};
   strike.cue_direction = {0.80715554837266634, 0.22022552761822595, -0.54772313965770558};
   strike.cue_speed = 0.85991340360124235;

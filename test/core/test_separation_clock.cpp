@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "../fixtures/paper_masse.hpp"
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "billiard_shot_planner/scenarios/cushion_impact.hpp"
@@ -33,7 +34,7 @@ void expectSameSolution(const bsp::ImpactResult& clocked, const bsp::ImpactResul
 TEST(SeparationClock, MasseStrikeMatchesPlainTime)
 {
   // Both contacts slide into their separation: the case the clock is for.
-  const bsp::CueStrike strike = bsp::paperMasseStrike();
+  const bsp::CueStrike strike = fixtures::paperMasseStrike();
   const auto clocked = bsp::solve(strike);
   const auto plain = bsp::solve(strike, plainTime());
   ASSERT_TRUE(clocked.ok() && plain.ok());
@@ -77,9 +78,9 @@ TEST(SeparationClock, RecordedImpulseCurveIsInPhysicalTime)
 {
   bsp::SolverOptions options;
   options.record_samples = true;
-  const auto clocked = bsp::solve(bsp::paperMasseStrike(), options).value().impact;
+  const auto clocked = bsp::solve(fixtures::paperMasseStrike(), options).value().impact;
   options.separation_clock = false;
-  const auto plain = bsp::solve(bsp::paperMasseStrike(), options).value().impact;
+  const auto plain = bsp::solve(fixtures::paperMasseStrike(), options).value().impact;
   ASSERT_GT(clocked.samples.size(), 10u);
   for (std::size_t k = 1; k < clocked.samples.size(); ++k)
     ASSERT_GE(clocked.samples[k].time, clocked.samples[k - 1].time) << "sample " << k;

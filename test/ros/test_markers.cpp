@@ -5,8 +5,8 @@
 #include <map>
 #include <set>
 
-#include "billiard_shot_planner/ros/trajectory_markers.hpp"
 #include "shot_fixtures.hpp"
+#include "trajectory_markers.hpp"
 
 namespace bsp = billiard_shot_planner;
 using visualization_msgs::Marker;

@@ -1,9 +1,10 @@
 // Core prediction → ShotPrediction message: every field carries the core's value.
 #include <gtest/gtest.h>
 
-#include "billiard_shot_planner/ros/prediction_message.hpp"
-#include "billiard_shot_planner/ros/tuning.hpp"
+#include "parameter_names.hpp"
+#include "prediction_message.hpp"
 #include "shot_fixtures.hpp"
+#include "tuning.hpp"
 
 namespace bsp = billiard_shot_planner;
 
@@ -29,18 +30,28 @@ TEST(PredictionMessage, CarriesTheCoreResult)
 TEST(ShotPrediction, OverridesAreValidatedByName)
 {
   bsp::ShotConfiguration c;
-  EXPECT_TRUE(bsp::applyOverride(c, "cue_contact/friction", 0.5).ok());
+  EXPECT_TRUE(bsp::applyOverride(c, "cue_contact.friction", 0.5).ok());
   EXPECT_EQ(c.cue_contact.friction, 0.5);
-  EXPECT_EQ(bsp::applyOverride(c, "cue_contact/friction", -1).error().field, "cue_contact/friction");
+  EXPECT_EQ(bsp::applyOverride(c, "cue_contact.friction", -1).error().field, "cue_contact.friction");
   EXPECT_EQ(c.cue_contact.friction, 0.5);  // a rejected value leaves the configuration as it was
   EXPECT_EQ(bsp::applyOverride(c, "warp_drive", 1).error().field, "warp_drive");
   bsp::ShotConfiguration d;
   d.table.cloth.eta2 = 0;
-  EXPECT_EQ(bsp::validate(d).error().field, "table/cloth/eta2");
-  EXPECT_EQ(bsp::applyOverride(c, "solver/relative_tolerance", 1e-20).error().field, "solver/relative_tolerance");
+  EXPECT_EQ(bsp::validate(d).error().field, "table.cloth.eta2");
+  EXPECT_EQ(bsp::applyOverride(c, "solver.relative_tolerance", 1e-20).error().field, "solver.relative_tolerance");
   bsp::ShotConfiguration e;
   e.solver.max_steps = 0;  // not a parameter, but the configuration checks every solver option
-  EXPECT_EQ(bsp::validate(e).error().field, "solver/max_steps");
+  EXPECT_EQ(bsp::validate(e).error().field, "solver.max_steps");
+}
+
+TEST(ParameterNames, TheNodeNamesConfigurationPathsWithSlashes)
+{
+  EXPECT_EQ(bsp::parameterName("table.cloth.friction"), "table/cloth/friction");
+  EXPECT_EQ(bsp::configurationPath("table/cloth/friction"), "table.cloth.friction");
+  bsp::ShotConfiguration d;
+  d.table.cloth.eta2 = 0;
+  EXPECT_EQ(bsp::namedAsParameter(bsp::validate(d)).error().field, "table/cloth/eta2");
+  EXPECT_TRUE(bsp::namedAsParameter(bsp::validate(bsp::ShotConfiguration{})).ok());
 }
 
 TEST(Tuning, RoundTripAndRejection)

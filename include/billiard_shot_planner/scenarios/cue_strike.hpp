@@ -44,10 +44,6 @@ struct CueStrike
   double stiffness_ratio = 1.0;                           ///< k_table / k_cue
 };
 
-/// The massé shot of the paper's §9.2 with the corrected ball (m = 0.17 kg, r = 0.0286 m; see docs) and the
-/// printed cue speed, the cue held on its axis; `cue_direction` defaults to the literal reading of the text.
-CueStrike paperMasseStrike(const Eigen::Vector3d& cue_direction = Eigen::Vector3d(-0.2761, -0.1388, -0.9511));
-
 /// The hit normal where the cue axis (through `axis_point`, along `direction`) first meets the ball: ray–sphere
 /// intersection. Errors (InvalidShot) when the axis misses the ball, the tip is inside the ball, or the ball is behind
 /// the tip.

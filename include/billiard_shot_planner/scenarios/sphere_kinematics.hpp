@@ -3,6 +3,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <string>
+
+#include "billiard_shot_planner/core/expected.hpp"
 #include "billiard_shot_planner/impact/contact.hpp"
 #include "billiard_shot_planner/impact/impact_problem.hpp"
 
@@ -65,6 +68,9 @@ struct SurfaceContact
   double friction = 0.0;     ///< Coulomb μ ≥ 0
   double eta2 = 1.0;         ///< η̄² = k̄/κ > 0, normal over tangential stiffness
 };
+
+/// Checks e ∈ [0, 1], μ ≥ 0, η² > 0; the error names the field as `field`.restitution, .friction or .eta2.
+Status validate(const SurfaceContact& surface, const std::string& field);
 
 inline ContactLaw contactLaw(const SurfaceContact& surface, double stiffness)
 {

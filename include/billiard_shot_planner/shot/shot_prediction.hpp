@@ -27,10 +27,11 @@ struct ShotConfiguration
   SolverOptions solver;
 };
 
-/// Checks every field; the error names it with the parameter names of the ROS node ("cue_contact/friction").
+/// Checks every field; the error names it by its path in the configuration ("cue_contact.friction").
 Status validate(const ShotConfiguration& configuration);
 
-/// A numeric parameter of ShotConfiguration by its name (the ROS node's parameter and override names).
+/// A numeric parameter of ShotConfiguration by its path ("table.cloth.friction"); the ROS node's parameter and
+/// override names are these paths with '/' for '.'.
 struct NamedParameter
 {
   const char* name;
@@ -38,9 +39,9 @@ struct NamedParameter
 };
 
 /// Every numeric parameter of the configuration, by name: cue_mass, cue_end_mass, ball_mass, ball_radius,
-/// cue_contact/{restitution,friction,eta2}, stiffness_ratio, table/{length,width,cushion_height,
-/// cushion_stiffness_ratio}, table/cloth/…, table/cushion/…, motion/{gravity,sliding_friction,rolling_friction,
-/// spinning_friction,min_bounce_speed,max_time}, solver/{relative_tolerance,absolute_tolerance,max_seconds}.
+/// cue_contact.{restitution,friction,eta2}, stiffness_ratio, table.{length,width,cushion_height,
+/// cushion_stiffness_ratio}, table.cloth.…, table.cushion.…, motion.{gravity,sliding_friction,rolling_friction,
+/// spinning_friction,min_bounce_speed,max_time}, solver.{relative_tolerance,absolute_tolerance,max_seconds}.
 std::vector<NamedParameter> numericParameters(ShotConfiguration& configuration);
 
 /// Sets one numeric parameter by name. Errors: unknown name, or a value the configuration rejects (then the

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "../fixtures/paper_masse.hpp"
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 
@@ -76,7 +77,7 @@ void printVector(const char* label, const Eigen::Vector3d& v)
 bool reportMasse()
 {
   std::printf("\nThe massé shot of section 9.2 (m = 0.17 kg, r = 0.0286 m; see README for the corrections)\n");
-  const auto result = bsp::solve(bsp::paperMasseStrike());
+  const auto result = bsp::solve(fixtures::paperMasseStrike());
   if (!result)
   {
     std::printf("  error: %s\n", result.error().describe().c_str());

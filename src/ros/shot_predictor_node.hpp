@@ -11,7 +11,7 @@
 #include <memory>
 #include <mutex>
 
-#include "billiard_shot_planner/ros/node_settings.hpp"
+#include "node_settings.hpp"
 
 namespace billiard_shot_planner
 {

@@ -1,13 +1,10 @@
-#pragma once
-
-#include <string>
+#include "billiard_shot_planner/scenarios/sphere_kinematics.hpp"
 
 #include "billiard_shot_planner/core/validation.hpp"
-#include "billiard_shot_planner/scenarios/sphere_kinematics.hpp"
 
 namespace billiard_shot_planner
 {
-inline Status validate(const SurfaceContact& surface, const std::string& field)
+Status validate(const SurfaceContact& surface, const std::string& field)
 {
   return firstError({requireUnitInterval(surface.restitution, field + ".restitution"),
                      requireNonNegative(surface.friction, field + ".friction"),
