@@ -11,7 +11,7 @@ BUILD_DIR="${BUILD_DIR:-${REPO_ROOT}/build}"
 # Every Debian package the build, tests, demo, benchmarks and fuzzing use (there is no rosdep on these machines).
 PACKAGES=(
   build-essential cmake
-  catkin ros-core-dev python3-catkin-pkg
+  catkin ros-core-dev python3-catkin-pkg rosbash
   libroscpp-dev libtf2-ros-dev libtf2-geometry-msgs-dev libtf2-eigen-dev libvisualization-msgs-dev
   libgeometry-msgs-dev librostest-dev python3-rostest python3-rospy tf2-tools
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
