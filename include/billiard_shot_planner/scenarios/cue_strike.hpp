@@ -14,7 +14,7 @@
 namespace billiard_shot_planner
 {
 /// A cue tip's effective mass across the cue's axis that holds it on the axis: the paper's shooter, whose cue ran
-/// in ball bearings (§9.1, eq. 48).
+/// in ball bearings (§9.2, eq. 48).
 constexpr double CUE_HELD_ON_AXIS = std::numeric_limits<double>::infinity();
 
 /// A hand-held (or robot-held) cue's end mass: the part of the shaft behind the tip that moves sideways with it
@@ -44,7 +44,7 @@ struct CueStrike
   double stiffness_ratio = 1.0;                           ///< k_table / k_cue
 };
 
-/// The massé shot of the paper's §9.2 with the corrected ball (m = 0.17 kg, r = 0.0286 m; see docs) and the
+/// The massé shot of the paper's §9.2 with the corrected ball (m = 0.17 kg, r = 0.0286 m; docs/validation.md) and the
 /// printed cue speed, the cue held on its axis; `cue_direction` defaults to the literal reading of the text.
 CueStrike paperMasseStrike(const Eigen::Vector3d& cue_direction = Eigen::Vector3d(-0.2761, -0.1388, -0.9511));
 
