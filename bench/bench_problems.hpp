@@ -66,7 +66,7 @@ inline bsp::SolverOptions integratedOnly(double relative)
 }
 
 /// The integrator alone in plain time: no closed form, no separation clock, every slip direction integrated from
-/// its start. What the package did before those devices, and the reference that checks them.
+/// its start. The baseline those devices are measured against, and the reference that checks them.
 inline bsp::SolverOptions plainIntegration(double relative)
 {
   bsp::SolverOptions options = integratedOnly(relative);
@@ -147,7 +147,7 @@ inline bsp::CuePlacement serviceMasseShot()
 
 /// The converged solution errors are measured against: numerical integration alone in plain time at tolerance
 /// 1e-14, independent of the closed form, the separation clock and the quasi-steady slip (and, for the paper's
-/// collisions, equal to the errata's independent values to 1e-7).
+/// collisions, equal to the independent converged values of docs/validation.md to 1e-7).
 template <class Problem>
 Eigen::VectorXd referenceVelocities(const Problem& problem)
 {
