@@ -85,7 +85,7 @@ void BM_TrajectoryThreeCushions(benchmark::State& state)
   state.counters["cushion_hits"] = hits;
 }
 /// The paper's fixed-step impulse method on Table 1; argument: −log10 of the impulse step. Error against the
-/// converged values of ../shared/spec/paper_errata.md (v1 = 0.6139494, v2 = 0.2097195).
+/// converged values of docs/validation.md, Table 1 (v1 = 0.6139494, v2 = 0.2097195).
 void BM_Table1PaperMethod(benchmark::State& state)
 {
   const double step = std::pow(10.0, -static_cast<double>(state.range(0)));

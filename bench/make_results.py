@@ -144,7 +144,7 @@ def main():
         "Velocity error: largest difference of the final velocities (m/s; rad/s for spins) from a converged solution, "
         "the package's numerical integration alone in plain time (no closed form, separation clock or quasi-steady "
         "slip) at tolerance 1e-14 (bench/bench_problems.hpp); for Table 1 with "
-        "the paper's method, from the converged values of ../shared/spec/paper_errata.md. Siconos is timed inside "
+        "the paper's method, from the converged values of docs/validation.md (Table 1). Siconos is timed inside "
         "MultipleImpact::compute only.",
         "",
         open(roundtrip).read().strip(),

@@ -44,8 +44,8 @@ inline Result solve(double m1, double m2, double ratio, double e1, double e2, do
     double ds = 0.0;
     double v1, v2;
     velocities(v1, v2);
-    // Where the secondary spring is still relaxed its slope is zero: the closed-form first-step slopes of
-    // spec §3 (eq. 27 and its analogues after S2 and S3).
+    // Where the secondary spring is still relaxed its slope is zero: the closed-form first-step slopes of the
+    // paper's §4.2 (eq. 27 and its analogues after S2 and S3; docs/validation.md, The paper's fixed-step method).
     auto slope = [&](double r, double b) { return 2.0 * r / (b + std::sqrt(b * b + 4.0 * r)); };
     if (active[s] && E[s] > 0.0 && E[p] > 0.0)
       ds = step * std::sqrt(k[s] * E[s] / (k[p] * E[p]));

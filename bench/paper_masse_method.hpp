@@ -4,10 +4,11 @@
 // contact's springs advance with a fixed step of the primary impulse (the active contact with the larger k·E,
 // footnote 18), one-step (Euler) integration, and every transition — end of compression (k ← k/e²), end of
 // restitution, reactivation, stick ↔ slip — is detected at the end of the step in which it happens. The springs are
-// those of the compliant model (spec §2.6): normal F_n = −k s_n, tangential −κ s_t in stick, −μF_n ŝ on the cone in
-// slip. The secondary impulses follow from the springs rather than from the ratio √(k_s E_s / k_p E_p); the two are
-// the same relation, and the step's length in time comes from δ = F_p dt + ½k_p|ṡ_p|dt², regular at the start
-// where the paper solves a quadratic for the first slope. First order in the step, like the paper's own runs.
+// those of the compliant model (docs/impact_model.md, Coulomb friction and tangential compliance): normal
+// F_n = −k s_n, tangential −κ s_t in stick, −μF_n ŝ on the cone in slip. The secondary impulses follow from the
+// springs rather than from the ratio √(k_s E_s / k_p E_p); the two are the same relation, and the step's length in
+// time comes from δ = F_p dt + ½k_p|ṡ_p|dt², regular at the start where the paper solves a quadratic for the first
+// slope. First order in the step, like the paper's own runs.
 #include <Eigen/Dense>
 #include <cmath>
 #include <utility>

@@ -8,8 +8,8 @@
 //
 // Siconos is driven through its own event-driven simulation (LsodarOSI, impact problem MultipleImpact) from the
 // instant of contact; only its MultipleImpact::compute is timed. Errors are the largest difference of the final
-// velocities from a converged solution (bench_problems.hpp), which agrees with the errata's independent values
-// (Fig. 7) and with the limit of Siconos's first-order sequence.
+// velocities from a converged solution (bench_problems.hpp), which agrees with the independent converged values of
+// docs/validation.md (Fig. 7) and with the limit of Siconos's first-order sequence.
 #include <benchmark/benchmark.h>
 #include <SiconosKernel.hpp>
 

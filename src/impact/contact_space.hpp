@@ -15,7 +15,8 @@ namespace detail
 /// frictional contact) the two tangents. Relative contact velocity is w = w0 + W·I, with W = J M⁻¹ Jᵀ the
 /// Delassus matrix, so the impulses I (with the springs) are the whole state. Velocities are scaled by the
 /// largest initial relative velocity, W by its largest normal diagonal entry and stiffnesses by the largest
-/// original normal stiffness; paper Theorem 5 and spec §2.10 make this exact.
+/// original normal stiffness; paper Theorem 5 and its frictional analogue (docs/impact_model.md, Scaling) make this
+/// exact.
 struct ContactSpace
 {
   std::vector<int> offset;

@@ -34,7 +34,9 @@ struct ContactState
   int ends_of_compression = 0;
   double stiffness = 1.0;  ///< current k = k̄ / e^{2j}
   double original_stiffness = 1.0;
-  double kappa = 1.0;  ///< tangential stiffness κ = k̄ / η̄², never changes (spec §2.4)
+  /// Tangential stiffness κ = k̄ / η̄²; never changes, not even at an end of compression (docs/impact_model.md,
+  /// Coulomb friction and tangential compliance).
+  double kappa = 1.0;
   double restitution = 1.0;
   double friction = 0.0;
   Eigen::Vector2d slip_direction = Eigen::Vector2d::UnitX();  ///< used while the tangential spring is relaxed
@@ -58,7 +60,8 @@ struct ContactState
   /// Rate of that length as the normal spring deforms at `normal_rate` (v_n): ρ̇ = μη²ṡ_n, and likewise for its
   /// higher derivatives.
   double coneRate(double normal_rate) const { return friction * eta2() * normal_rate; }
-  /// Current η² = k/κ; grows by 1/e² with k at every end of compression (spec §2.4).
+  /// Current η² = k/κ; grows by 1/e² with k at every end of compression (docs/impact_model.md, Coulomb friction
+  /// and tangential compliance).
   double eta2() const { return stiffness / kappa; }
 };
 

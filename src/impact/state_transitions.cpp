@@ -14,8 +14,8 @@ namespace
 constexpr double FORCE_TOLERANCE = 1e-12;
 /// A touching contact without force is let go only while it approaches slower than this, half the approach at
 /// which an inactive contact reactivates (VELOCITY_TOLERANCE). With one threshold for both, a contact reactivated
-/// at its guard's root, approaching at exactly the threshold, was let go at once, and reactivated again at the same
-/// instant for ever (a grazing cushion hit of a random table sweep).
+/// at its guard's root, approaching at exactly the threshold (a grazing cushion hit), would be let go at once and
+/// reactivated again at the same instant, for ever.
 constexpr double RELEASE_VELOCITY = 0.5 * VELOCITY_TOLERANCE;
 
 double* springs(double* y, const ContactSpace& space, std::size_t contact)
@@ -30,7 +30,8 @@ void relaxSprings(double* y, const ContactSpace& space, std::size_t contact)
     s[k] = 0.0;
 }
 
-/// Initial tangential mode of a contact whose springs are relaxed (spec §2.8a and §2.8c).
+/// Initial tangential mode of a contact whose springs are relaxed (docs/impact_model.md, Coulomb friction and
+/// tangential compliance: modes from relaxed springs).
 void chooseInitialMode(ContactState& contact, const Eigen::VectorXd& velocity, const ContactSpace& space,
                        std::size_t index)
 {
@@ -66,9 +67,9 @@ void startSlip(ContactState& contact, const Eigen::Vector2d& direction, double* 
 constexpr double REACTIVATION_ROUND_OFFS = 4.0;
 
 /// The contact stops touching: inactive, its springs relaxed, and reactivated only by an approach beyond the
-/// round-off of its velocity. With impulses of 3e3 (a heavy cue jammed on the ball) that round-off is 2e-11; read
-/// against VELOCITY_TOLERANCE alone, the noise of a released cue tip's velocity reactivates it, its link pulls and
-/// is released, and so on for 200 000 events.
+/// round-off of its velocity. With large impulses (a heavy cue jammed on the ball) that round-off is far above
+/// VELOCITY_TOLERANCE; read against VELOCITY_TOLERANCE alone, the noise of a released cue tip's velocity would
+/// reactivate it, its link pull and be released, and so on until the event bound.
 void stopTouching(std::size_t index, double* y, ContactState& contact, const ContactSpace& space)
 {
   contact.phase = NormalPhase::Inactive;
@@ -101,9 +102,9 @@ void rigidImpulse(std::size_t index, double change, double* y, const std::vector
 }
 
 /// Makes a contact a rigid link at zero normal velocity. A link keeps its normal velocity for as long as it holds,
-/// and its force does work at that velocity: made where an end of compression found late leaves it separating at
-/// 2.5e-5 (a light ball on a plastic table under a heavy one), the link pushes the heavy ball out with 3e-5 more
-/// energy than it came in with (project issue 23). The limit of infinite stiffness has v_n = 0 (paper Theorem 12;
+/// and its force does work at that velocity: made where an end of compression located a little late leaves it
+/// separating (a light ball on a plastic table under a heavy one), the link would push the heavy ball out with more
+/// energy than it came in with. The limit of infinite stiffness has v_n = 0 (paper Theorem 12;
 /// an end of compression is where v_n crosses zero), so what is left, the event's location error, is removed by a
 /// plastic impulse of the contact: −½ v_n²/W_eff of kinetic energy, never a gain.
 void makeRigidLink(std::size_t index, const Kinematics& kinematics, double* y, std::vector<ContactState>& contacts,
@@ -124,10 +125,10 @@ bool isChattering(const ContactState& contact, double deformation, const Chatter
   const bool negligible = repeated && stored_energy <= chatter.energy;
   const bool unresolved = repeated && std::abs(deformation) <= chatter.deformation;
   // The bound is on the stiffness the restitution would have, k/e²: a phase that stiff is the rigid limit already,
-  // and no method resolves it. Checked against the stiffness before it grows, a nearly plastic contact (e = 4e-6)
-  // restitutes at 1e21 after its second end of compression, and, reactivated at once, presses with a deformation of
-  // 1e-27 whose end no method finds, stepping at its period to the step bound; e = 1e-12 restitutes at 1e24 after
-  // its first, and a cue strike's energy rises by 29 %.
+  // and no method resolves it. Checked against the stiffness before it grows, a nearly plastic contact would
+  // restitute at 1e21 k̄ or more after an end of compression and, reactivated at once, press with a deformation
+  // whose end no method finds, stepping at its period to the step bound; a restitution that stiff can also make the
+  // energy rise.
   const double restitution_stiffness = contact.stiffness / (contact.restitution * contact.restitution);
   return negligible || unresolved || restitution_stiffness / contact.original_stiffness >= chatter.stiffness_growth;
 }
@@ -271,8 +272,8 @@ std::optional<AffineGuard> affineForm(const Guard& guard, const std::vector<Cont
     case ContactEventType::RestartOfCompression:
       return AffineGuard{Quantity::Velocity, row, -1.0, 0.0};
     case ContactEventType::Reactivation:
-      // Approaching by more than round-off: a released rigid link left touching at v_n = 0 with a force of 1e-18
-      // would otherwise cross zero again at the same instant and link and release for ever (random chains).
+      // Approaching by more than round-off: a released rigid link left touching at v_n = 0 with a force of round-off
+      // would otherwise cross zero again at the same instant, and link and release for ever (a chain's far balls).
       return AffineGuard{Quantity::Velocity, row, -1.0, -contacts[guard.contact].reactivation_speed};
     case ContactEventType::Separation:
       return AffineGuard{Quantity::Spring, row, 1.0, 0.0};
@@ -295,7 +296,9 @@ double guardValue(const Guard& guard, const Kinematics& kinematics, const std::v
   const ContactState& contact = contacts[guard.contact];
   if (guard.releases_direction)
     return dynamics.relaxationRatio(guard.contact, kinematics.velocity, kinematics.force) - 1.0;
-  if (guard.type == ContactEventType::StickToSlip)  // |F_t| − μ F_n, i.e. E_t − μ²η²E_n in force form (spec §2.5)
+  // Stick to slip: |F_t| − μ F_n, i.e. E_t − μ²η²E_n in force form (docs/impact_model.md, Coulomb friction and
+  // tangential compliance).
+  if (guard.type == ContactEventType::StickToSlip)
     return std::hypot(kinematics.force(row + 1), kinematics.force(row + 2)) - contact.friction * kinematics.force(row);
   if (guard.type == ContactEventType::SlipToStick)
     return -dynamics.slidingSpeed(guard.contact, kinematics.y, kinematics.velocity, kinematics.force);
@@ -328,8 +331,8 @@ TransitionEvents applyTransition(const Guard& guard, const Kinematics& kinematic
       {
         // A contact that slips as soon as it is touched (the cloth under a struck ball, pushed out of its cone from
         // the first instant): its springs hold round-off, whose direction is noise, even against the slip. It
-        // slips from relaxed springs, along its slip velocity. Integrated from a noise direction, the friction of a
-        // random cue strike pushed along the slip and changed the spin by 1e-3 rad/s, depending on the tolerance.
+        // slips from relaxed springs, along its slip velocity. Integrated from a noise direction, the friction could
+        // push along the slip, and the result would depend on the tolerance.
         const Eigen::Vector2d slip(kinematics.velocity(row + 1), kinematics.velocity(row + 2));
         startSlip(contact, slip.norm() > 0.0 ? Eigen::Vector2d(slip.normalized()) : contact.slip_direction, y, space,
                   guard.contact, /*from_relaxed_springs=*/true);
@@ -372,8 +375,8 @@ bool nothingCanLoad(const Kinematics& kinematics, const std::vector<ContactState
   {
     const int row = space.offset[i];
     // An inactive contact loads only by reactivating, which takes an approach faster than its reactivation speed; with
-    // RELEASE_VELOCITY for it too, one approaching at 7e-13 (a random chain's far balls) kept a contact touching at
-    // rest from being let go, and the state ran to the step bound.
+    // RELEASE_VELOCITY for it too, one approaching slower than that (a chain's far balls) would keep a contact
+    // touching at rest from being let go, and the state would run to the step bound.
     const double approach = contacts[i].active() ? RELEASE_VELOCITY : contacts[i].reactivation_speed;
     if (kinematics.velocity(row) < -approach)
       return false;
@@ -421,7 +424,7 @@ std::optional<Guard> immediateTransition(const Kinematics& kinematics, const std
       case NormalPhase::Restitution:
         // Relaxed and opening: its spring would pull from now on. A state can start so, its separation's guard
         // above zero by round-off where another transition takes the instant (a cue tip's link released as the
-        // cloth relaxes: the cloth would pull the ball down, 1e-4 of the strike's energy).
+        // cloth relaxes: the cloth would pull the ball down and gain energy).
         if (contacts[i].phase == NormalPhase::Restitution && s_n >= 0.0 && v_n > VELOCITY_TOLERANCE)
           return Guard{i, ContactEventType::Separation};
         if (s_n >= 0.0 && std::abs(v_n) <= RELEASE_VELOCITY && nothingCanLoad(kinematics, contacts, space))

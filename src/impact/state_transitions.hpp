@@ -12,8 +12,8 @@ namespace billiard_shot_planner
 namespace detail
 {
 /// The state transition diagram (paper §3.1, generated on the fly for any number of contacts as in §10, with the
-/// tangential modes of spec §2.7): which transitions are armed in a discrete state, when they fire, and what they
-/// do to the contact.
+/// tangential modes of docs/impact_model.md, Coulomb friction and tangential compliance): which transitions are
+/// armed in a discrete state, when they fire, and what they do to the contact.
 
 /// A transition that may fire: it fires when its guard function rises through zero.
 struct Guard
@@ -120,9 +120,9 @@ std::optional<Guard> jammedLink(ContactDynamics& dynamics, const Kinematics& kin
 void releaseUnpressedRestingContacts(const Eigen::VectorXd& jerk, const Eigen::VectorXd& w,
                                      std::vector<ContactState>& contacts, const ContactSpace& space);
 
-/// Initial tangential mode of contacts that start at rest relative to each other (spec §2.8b, the ball on the
-/// cloth at the first instant of a shot): the limit of the spring ratio is set by J = d²w/dt² at 0⁺, so the contact
-/// sticks iff |J_t| ≤ μη²|J_n|, and otherwise slips along Ĵ_t.
+/// Initial tangential mode of contacts that start at rest relative to each other (the ball on the cloth at the first
+/// instant of a shot; docs/impact_model.md, Resting contacts): the limit of the spring ratio is set by
+/// J = d²w/dt² at 0⁺, so the contact sticks iff |J_t| ≤ μη²|J_n|, and otherwise slips along Ĵ_t.
 /// First releases the resting contacts that the impact does not press (releaseUnpressedRestingContacts).
 /// Also places the slip-direction carrier of every contact that starts slipping.
 void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vector<ContactState>& contacts,

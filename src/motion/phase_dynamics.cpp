@@ -14,7 +14,8 @@ double rollingDeceleration(const MotionParameters& p)
   return scale * p.rolling_friction * p.gravity;
 }
 
-/// Spin about z decays linearly on the cloth (spec §6.2); returns its angular deceleration and stop time.
+/// Spin about z decays linearly on the cloth (docs/impact_model.md, Motion on the table); returns its angular
+/// deceleration and stop time.
 void addSpinDecay(PhaseMotion& motion, const BallState& state, const Ball& ball, const MotionParameters& p)
 {
   const double w_z = state.angular_velocity.z();
@@ -72,7 +73,8 @@ PhaseMotion phaseMotion(MotionPhase phase, const BallState& state, const Ball& b
       return motion;
     case MotionPhase::Sliding:
     {
-      // Friction μ_s m g against the slip û; the slip shrinks at (7/2) μ_s g (spec §6.2).
+      // Friction μ_s m g against the slip û; the slip shrinks at (7/2) μ_s g (docs/impact_model.md, Motion on the
+      // table).
       const Eigen::Vector2d u = contactSlip(state, ball.radius);
       const Eigen::Vector2d slip = u.normalized();
       const double friction = p.sliding_friction * p.gravity;

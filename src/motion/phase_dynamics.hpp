@@ -12,7 +12,8 @@ namespace detail
 constexpr double REST_SPEED = 1e-9;
 constexpr double NEVER = std::numeric_limits<double>::infinity();
 
-/// Which phase a state is in (spec §6.2): off the cloth, slipping, rolling, spinning or at rest.
+/// Which phase a state is in (docs/impact_model.md, Motion on the table): off the cloth, slipping, rolling,
+/// spinning or at rest.
 MotionPhase classify(const BallState& state, double radius);
 
 /// Contact slip velocity on the cloth, u = v + R ẑ × ω (its xy part).

@@ -118,7 +118,7 @@ TEST(ImpactSolve, CueStrikeFromTheIssue)
     EXPECT_NEAR(v[k], expected.velocity(k), 1e-12);
     EXPECT_NEAR(w[k], expected.angular_velocity(k), 1e-10);
   }
-  // Spec §7.4, first row, is for m = 0.17: the 0.06 % heavier ball moves v by < 1e-3.
+  // docs/validation.md, The massé shot: its first row is for m = 0.17; the 0.06 % heavier ball moves v by < 1e-3.
   EXPECT_NEAR(v[0], -1.42587, 1e-3);
   EXPECT_NEAR(v[1], 0.24610, 1e-3);
   EXPECT_NEAR(v[2], 0.45511, 1e-3);
@@ -255,7 +255,8 @@ TEST(ImpactSolve, BallMotionAndShot)
   ASSERT_EQ(motion.exit_code, 0) << motion.output;
   const auto m = nlohmann::json::parse(motion.output);
   EXPECT_EQ(m["outcome"], "rest");
-  EXPECT_NEAR(m["rest_position"][0].get<double>(), -2.00179, 1e-5);  // spec §7.5
+  // docs/validation.md, Motion after the massé shot.
+  EXPECT_NEAR(m["rest_position"][0].get<double>(), -2.00179, 1e-5);
   EXPECT_NEAR(m["rest_position"][1].get<double>(), -1.02020, 1e-5);
   EXPECT_EQ(m["events"][1]["type"], "slide_to_roll");
   EXPECT_GT(m["samples"].size(), 100u);
@@ -299,7 +300,8 @@ TEST(ImpactSolve, BallMotionBadInput)
 
 TEST(ImpactSolve, MeaninglessInputIsRefusedNotSolved)
 {
-  // Finite but absurd values once came back as null (NaN) with exit 0, ran out of memory, or let energy rise.
+  // Finite but absurd values must be refused: solved, they could come back as null (NaN) with exit 0, run out of
+  // memory, or let energy rise.
   const std::string motion = R"({"problem": "ball_motion", "position": [0, 0], "omega": [0, 0, 0], )";
   const std::string cases[][2] = {
       {motion + R"("v": [1e308, 0, 0]})", "v"},

@@ -1,5 +1,5 @@
-// The paper's ball–ball–table collisions (§6.3), against the converged values of ../shared/spec/paper_errata.md
-// (independent time-domain solution with event location, tolerance 1e-12) and the paper's printed values.
+// The paper's ball–ball–table collisions (§6.3), against the converged values of docs/validation.md, The paper's
+// collisions (independent time-domain solution with event location, tolerance 1e-12) and the paper's printed values.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,7 +40,7 @@ TEST(Table1, StateSequenceAndFinalVelocities)
 {
   const auto r = solved(table1());
   EXPECT_EQ(bsp::ballBallTableStates(r), (std::vector<std::string>{"S1", "S2", "S1", "S3", "S4"}));
-  // Converged reference (errata §2), 1e-6.
+  // Converged reference (docs/validation.md, Table 1), 1e-6.
   EXPECT_NEAR(r.velocity(0), 0.6139494, 1e-6);
   EXPECT_NEAR(r.velocity(1), 0.2097195, 1e-6);
   EXPECT_NEAR(r.impulses[0].normal, 1.6139494, 1e-6);
@@ -80,7 +80,8 @@ TEST(Table1, FirstEndOfCompressionAndEnergyLossPerContact)
   const auto& first = r.events.front();
   EXPECT_EQ(first.type, bsp::ContactEventType::EndOfCompression);
   EXPECT_EQ(first.contact, 0u);
-  // spec §7.1(a): E1,max = 0.27655 at (I1, I2) = (0.56506, 0.06283); the event is logged after the loss e1²E.
+  // docs/validation.md, Table 1: E1,max = 0.27655 at (I1, I2) = (0.56506, 0.06283); the event is logged after the
+  // loss, at e1²E.
   EXPECT_NEAR(first.at.strain_energies(0), 0.81 * 0.27655, 1e-5);
   EXPECT_NEAR(first.at.normal_impulses(0), 0.56506, 1e-5);
   EXPECT_NEAR(first.at.normal_impulses(1), 0.06283, 1e-5);
@@ -108,7 +109,8 @@ TEST(Fig9RestartOfCompression, CrossingsAndSequence)
   auto c = table1();
   c.m2 = 0.5;
   const auto r = solved(c);
-  // errata §3: the paper's text says <S1, S3, S4>, its own account of the curve implies <S1, S2, S4>.
+  // docs/validation.md, Fig. 9: the paper's text says <S1, S3, S4>, its own account of the curve implies
+  // <S1, S2, S4>.
   EXPECT_EQ(bsp::ballBallTableStates(r), (std::vector<std::string>{"S1", "S2", "S4"}));
   using T = bsp::ContactEventType;
   struct Crossing
@@ -216,10 +218,11 @@ TEST(ImpulseCurve, InsideTheEllipseAndEnergyConstantBetweenEndsOfCompression)
 
 TEST(BallBallTable, ChatterNearTiesEndAsTheExactSequence)
 {
-  // Two collisions whose chatter ends near a tie (project issue 23). Against an exact piecewise solution the first
-  // chatters 22 cycles into the rigid-link limit, v1 = v2 = 0.5420958; the closed form stopped after 9 cycles with
-  // v1 − v2 = 1e-4. The second has a short S1 the closed form skipped (4e-8 off). Both now as the exact sequence:
-  // the first at the limit to the 7 digits given, the second as integration at a tight tolerance.
+  // Two collisions whose chatter ends near a tie, where a guard touches zero nearly tangentially and must be
+  // decided, not dropped. Against an exact piecewise solution the first chatters 22 cycles into the rigid-link
+  // limit, v1 = v2 = 0.5420958; the second has a short S1 that a crossing search could step over. Both must come out
+  // as the exact sequence: the first at the limit to the 7 digits given, the second as integration at a tight
+  // tolerance.
   const auto tie = solved({0.7445701166465388, 0.7333162515966738, 0.5484104959910449, 0.4352675225021643,
                            0.5231094637743532, -1.974669286548985});
   EXPECT_TRUE(tie.converged);

@@ -1,5 +1,6 @@
-// Ball motion after the shot (spec §6): closed-form phases against independent formulas and the spec's §7.5
-// numbers, physical invariants, landings, cushions and pockets.
+// Ball motion after the shot (docs/impact_model.md, Motion on the table): closed-form phases against independent
+// formulas and the reference numbers of docs/validation.md, Motion after the massé shot; physical invariants,
+// landings, cushions and pockets.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -122,7 +123,7 @@ TEST(BallMotion, ClosedFormsOfSpecSection75)
   for (const Case& c : cases)
   {
     const auto t = predicted(stateOf(c.v, c.w), openTable(), p, c.radius);
-    // Independent closed forms of spec §6.2.
+    // Independent closed forms (docs/impact_model.md, Motion on the table).
     const Eigen::Vector2d v0 = c.v.head<2>();
     const Eigen::Vector2d u0(c.v.x() - c.radius * c.w.y(), c.v.y() + c.radius * c.w.x());
     const double t_s = 2.0 * u0.norm() / (7.0 * MU_S * G);
@@ -141,7 +142,7 @@ TEST(BallMotion, ClosedFormsOfSpecSection75)
     EXPECT_NEAR(roll_end->time - slide_end->time, t_roll, 1e-9);
     EXPECT_LT((t.finalState().position.head<2>() - rest).norm(), 1e-9);
     EXPECT_EQ(t.outcome, bsp::MotionOutcome::Rest);
-    // The spec's printed values (5 digits).
+    // The reference values of docs/validation.md, Motion after the massé shot (5 digits).
     EXPECT_NEAR(t_s, c.t_s, 1e-5);
     EXPECT_LT((x_s - c.x_s).norm(), 2e-5);
     EXPECT_LT((v_roll - c.v_roll).norm(), 2e-5);
@@ -301,8 +302,8 @@ TEST(Cushion, AtTheHeightOfTheCentreTheClothNeverLoads)
 {
   // Cushion nose at the height of the ball's centre: its normal is horizontal. Without spin about the cushion's
   // direction nothing pushes the ball into the cloth: the cloth contact, touching at rest, never takes part (no
-  // derivative of its normal velocity is pressing), changes nothing, and the impact ends (it used to run into the
-  // step limit, taking seconds, while the cloth touched without force from start to end).
+  // derivative of its normal velocity is pressing), changes nothing, and the impact ends; a cloth left touching
+  // without force from start to end would keep the impact going to the step limit.
   const bsp::Table table;
   const Eigen::Vector3d spins[] = {Eigen::Vector3d::Zero(), {0, 0, 5.0}, {0, 0, -40.0}};
   for (const Eigen::Vector3d& spin : spins)
@@ -332,12 +333,11 @@ TEST(Cushion, AtTheHeightOfTheCentreTheClothNeverLoads)
 
 TEST(Cushion, AContactReactivatedAtItsThresholdLoadsInsteadOfBeingLetGo)
 {
-  // From a random table sweep: a ball whose spin curls it back into a soft cushion (e 0.19) meets it at 5e-12 m/s.
-  // The cushion contact separated, then reactivated at its guard's root, approaching at exactly the threshold of
-  // reactivation. The rule that lets go of a contact touching without force took that approach for none: the
-  // contact was let go at once and reactivated at the same instant until the event bound (200 000 events). Since
-  // an end of compression in an integrated state waits for a separation speed the integrator resolves (1e-12), the
-  // contact no longer comes back at all: any reactivation must still load it (an end of compression follows).
+  // A ball whose spin curls it back into a soft cushion (e 0.19) meets it at 5e-12 m/s: a contact that can separate
+  // and reactivate at its guard's root, approaching at exactly the threshold of reactivation. The rule that lets go
+  // of a contact touching without force must not take that approach for none, or the contact is let go and
+  // reactivated at the same instant until the event bound. Any reactivation must load the contact (an end of
+  // compression follows).
   bsp::CushionImpact hit;
   hit.velocity = {0.84223154723387328, -5.3852930112494759e-12, 0.0};
   hit.angular_velocity = {0.0040839865442658975, 39.310115375068428, 25.463927966066368};
@@ -366,10 +366,10 @@ TEST(Cushion, AContactReactivatedAtItsThresholdLoadsInsteadOfBeingLetGo)
 
 TEST(Cushion, TheClothUnderANoseBelowTheCentreNeverTakesPart)
 {
-  // From a random table sweep: a nose at 0.57 radii, so the cushion lifts the ball off the cloth. The cloth contact
-  // starts at v_n = 0 and is pulled apart from the first instant. It once stayed in compression while pulled apart
-  // (its end of compression missed on an interpolant's v_n = +6e-18) and the solve ran into the step bound (300 000
-  // steps). Now a resting contact that the impact does not press never takes part: no event, no impulse.
+  // A nose at 0.57 radii, so the cushion lifts the ball off the cloth. The cloth contact starts at v_n = 0 and is
+  // pulled apart from the first instant; if it stayed in compression (its end of compression missed on an
+  // interpolant's round-off above zero), the solve would run into the step bound. A resting contact that the impact
+  // does not press never takes part: no event, no impulse.
   bsp::CushionImpact hit;
   hit.velocity = {3.9542302919004766, -0.79789615085793442, 0.0};
   hit.angular_velocity = {28.678041277547241, 58.882103295385363, 16.601380833434163};
@@ -393,10 +393,10 @@ TEST(Cushion, TheClothUnderANoseBelowTheCentreNeverTakesPart)
 
 TEST(Cushion, AGrazingHitWhoseContactsBarelyLoadEnds)
 {
-  // From a random table sweep: spin curls the ball back into a soft cushion (e 0.08), which it meets at 5e-8 m/s.
-  // Both contacts then slide with friction cones of length 1e-8 (dimensionless). The cloth's direction was
-  // integrated — it had been fixed in a linear state before — and turned at |v_t|/ρ: 300 000 steps of 5e-6, then
-  // the step bound. Now a sliding contact whose cone is that short follows its slip quasi-steadily.
+  // Spin curls the ball back into a soft cushion (e 0.08), which it meets at 5e-8 m/s. Both contacts then slide with
+  // friction cones of length 1e-8 (dimensionless), and the cloth's direction, integrated, would turn at |v_t|/ρ, a
+  // stiff equation that runs the integrator to the step bound. A sliding contact whose cone is that short follows
+  // its slip quasi-steadily.
   bsp::CushionImpact hit;
   hit.velocity = {-4.7415650383525699e-08, 1.1704347889257103, 0.0};
   hit.angular_velocity = {-33.308179561275331, -16.07797448399953, 50.915517919966952};
@@ -419,10 +419,9 @@ TEST(Cushion, AGrazingHitWhoseContactsBarelyLoadEnds)
 
 TEST(Cushion, ABallCurlingIntoASoftCushionIsPredicted)
 {
-  // The whole path of the sweep's table above: a Zeno sequence of ever-smaller cushion hits (2e-3, 6e-5, 1e-6,
-  // 4e-8 m/s) used to end in the step bound. Later its last hits, at 1e-13 m/s, were missed and the ball went 6 mm
-  // into the cushion on its way to the corner pocket. It must end, against the cushion, where the sequence has
-  // converged.
+  // The whole path of the table above: a Zeno sequence of ever-smaller cushion hits (2e-3, 6e-5, 1e-6, 4e-8 m/s).
+  // Its last hits barely load their contacts, and hits slower still can be missed, letting the ball into the
+  // cushion. It must end, against the cushion, where the sequence has converged.
   bsp::Table table;
   table.cushion_height = 0.054877466962702667;
   table.cloth = {0.091595829160741549, 0.33505336153968185, 13.924299933076691};
@@ -448,13 +447,11 @@ TEST(Cushion, ABallCurlingIntoASoftCushionIsPredicted)
 
 TEST(Cushion, ATipThatSlipsOnAShortConeFollowsItsSlipOnceRelaxed)
 {
-  // From a sweep of random tables: a hopping ball grazes a nearly plastic cushion (e 3e-4) over a cloth of small
-  // friction (0.024). The cushion contact slips from a loaded spring, then becomes a rigid link, with a relaxation
-  // time ρ/|v_t| of 1e-6 of the collision's: its integrated direction relaxed onto the slip within a few of those,
-  // but was integrated on as a stiff equation, 153 000 steps (9 s for the path, once the quasi-steady release went by
-  // relaxation time; before, the path took another sequence). A slip that has relaxed is now followed
-  // quasi-steadily from the end of the step where it has: the path must end with every impact far inside a step
-  // bound of 20 000.
+  // A hopping ball grazes a nearly plastic cushion (e 3e-4) over a cloth of small friction (0.024). The cushion
+  // contact slips from a loaded spring, then becomes a rigid link, with a relaxation time ρ/|v_t| of 1e-6 of the
+  // collision's: its integrated direction relaxes onto the slip within a few of those, and integrated on it is a
+  // stiff equation. A slip that has relaxed is followed quasi-steadily from the end of the step where it has: the
+  // path must end with every impact far inside a step bound of 20 000.
   bsp::Table table;
   table.cloth = {0.27778586242616549, 0.023531720218351863, 3.0322937484677674};
   table.cushion = {0.00030755272638528466, 0.28191673980882598, 7.2193506293204495};
@@ -477,8 +474,8 @@ TEST(Cushion, ATipThatSlipsOnAShortConeFollowsItsSlipOnceRelaxed)
 TEST(Cushion, RandomShotsAlongARailNeverEnterTheCushion)
 {
   // Shots within 4 cm of the +y rail with any spin: many curl back into it. Every path stays on the table side of
-  // the noses; a path that ends against a cushion has converged there (k = 333 is one: it used to go through the
-  // rail, by 13 cm).
+  // the noses; a path that ends against a cushion has converged there (k = 333 is one, which would otherwise go
+  // through the rail).
   const bsp::Table table;
   std::mt19937 rng(2);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -549,9 +546,8 @@ TEST(Cushion, RandomHitsAndLandingsEndAndLoseEnergy)
 TEST(Cushion, ABallPressedIntoTheRailByItsSpinEndsAgainstIt)
 {
   // Side spin (ω_x < 0) drives the slip into the +y rail: the ball comes back after every hit, slower each time, a
-  // Zeno sequence. The last hits, approaching at 1e-12 m/s, were missed and the ball went through the cushion,
-  // coming to rest 4 cm past where it touches the nose (6 of 3 000 random shots near a rail, up to 0.5 m). Now the
-  // path ends where the sequence has converged, against the cushion.
+  // Zeno sequence. Followed to its last hits, approaching at 1e-12 m/s and less, a hit would be missed and the ball
+  // would go through the cushion. The path ends where the sequence has converged, against the cushion.
   const bsp::Table table;
   const auto t = predicted(stateOf({0.3, 0.0, 0.0}, {-100.0, 0.0, 0.0}, {-0.8, 0.635 - 0.0286 - 0.002}), table);
   EXPECT_EQ(t.outcome, bsp::MotionOutcome::AgainstCushion);
@@ -585,10 +581,9 @@ TEST(Cushion, ABallCurlingBackToTheRailFasterStillRebounds)
 
 TEST(Cushion, ARollingBallsHitDoesNotDependOnRoundOffInItsClothContact)
 {
-  // A random shot (seed 8, shot 1635 of a table sweep): the ball rolls into the −y rail. Its cloth contact has a
-  // slip of round-off (1e-16) at the hit, so its first stick/slip decisions were noise: integrated from the start at
-  // 1e-13 the cloth stuck and the ball left the rail at v_y 0.226 instead of 0.359 m/s (0.2 m further on, a pocket
-  // instead of rest). Velocities below round-off are zero now, and the hit is the same by every route, to 1e-8.
+  // The ball rolls into the −y rail. Its cloth contact has a slip of round-off (1e-16) at the hit, and the first
+  // stick/slip decisions must not depend on that noise: velocities below round-off are zero, and the hit must be
+  // the same by every route (default, integrated from the start at 1e-13), to 1e-8.
   bsp::BallState start;
   start.position << 1.019103830667047, -0.11099287062386398, 0.0286;
   start.velocity << -1.3167934302843094, -0.28434362218257281, 0.0;
@@ -612,8 +607,8 @@ TEST(Cushion, ARollingBallsHitDoesNotDependOnRoundOffInItsClothContact)
 TEST(Cushion, AirborneBallsTouchTheNoseAtOneRadiusOrPassOverIt)
 {
   // Hops towards the rails with any spin, for noses below, at and above the ball's centre height. In the air the
-  // ball must meet the nose where its centre is one radius from the nose line (it used to be taken to hit it at
-  // the on-cloth reach, one shot in a thousand then had no approach left and the prediction failed), or pass
+  // ball must meet the nose where its centre is one radius from the nose line (taken to hit it at the on-cloth
+  // reach, where it may not touch it yet, it could have no approach left and the prediction would fail), or pass
   // over it and leave the table with its bottom above the nose.
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -679,9 +674,9 @@ bsp::BallTrajectory predictedOn(const RandomTable& c)
 
 TEST(Cushion, HopsOfNothing)
 {
-  // From a random sweep of tables: cushion hits that leave the ball a hop of about 1e-14 s. The search for an
-  // airborne cushion contact over the first threw from TOMS 748 (bounds out of order) through predictTrajectory;
-  // the second came down at v_z = +5e-16, and the landing refused it (no approach). Both must simply go on.
+  // Cushion hits that leave the ball a hop of about 1e-14 s. Over the first, the search for an airborne cushion
+  // contact must not hand TOMS 748 bounds out of order; the second comes down at v_z = +5e-16, which the landing
+  // must not refuse for having no approach. Both must simply go on.
   const RandomTable tables[] = {
       {0.026892482682571821,
        0.03566483138945329,

@@ -1,6 +1,6 @@
-// One compliant contact with friction (spec §2 and §7.2): a unit sphere (m = 1, r = 1, I = 0.4) hits a fixed
-// table. Reference values are the spec's independent time-domain reconstruction; the analytic pure-stick formula is
-// derived in spec §7.2.
+// One compliant contact with friction (docs/impact_model.md, Coulomb friction and tangential compliance): a unit
+// sphere (m = 1, r = 1, I = 0.4) hits a fixed table. Reference values and the analytic pure-stick formula:
+// docs/validation.md, One compliant contact (an independent time-domain implementation of the same model).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -124,7 +124,7 @@ TEST(CompliantContact, PureStickMatchesTheAnalyticSolution)
   {
     const double eta2 = row[0], e = row[1];
     const double u_end = v_t0 * std::cos(M_PI / 2.0 * (1.0 + e) * std::sqrt(3.5 / eta2));
-    EXPECT_NEAR(u_end, row[2], 1e-6);  // the spec's table agrees with the formula
+    EXPECT_NEAR(u_end, row[2], 1e-6);  // the reference table agrees with the formula
     const auto r = solved({v_t0, 0, -1}, {0, 0, 0}, 1e9, eta2, e);
     const double contact_slip = r.velocity.x() - r.angular_velocity.y();  // v_x − r ω_y at the contact
     EXPECT_NEAR(contact_slip, u_end, 1e-6) << "eta2 " << eta2 << " e " << e;

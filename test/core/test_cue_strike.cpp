@@ -1,5 +1,6 @@
-// The integrated cue strike (paper §8): the massé shot of §9.2 against the spec's converged reconstruction
-// (compliant_impact_model.md §7.4), the invariants of spec §4.4 on random shots, and invalid shots.
+// The integrated cue strike (paper §8): the massé shot of §9.2 against the converged reference of
+// docs/validation.md, The massé shot; the invariants of docs/impact_model.md, The cue strike, on random shots; and
+// invalid shots.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,7 +16,7 @@ namespace bsp = billiard_shot_planner;
 
 namespace
 {
-/// The paper's massé inputs with the corrections of errata §5: m = 0.17 kg, r = 0.0286 m.
+/// The paper's massé inputs with the corrections of docs/validation.md, The massé shot: m = 0.17 kg, r = 0.0286 m.
 bsp::CueStrike masse(const Eigen::Vector3d& cue_direction, double cue_eta2 = 7.0)
 {
   bsp::CueStrike s = fixtures::paperMasseStrike(cue_direction);
@@ -53,7 +54,7 @@ bsp::CueStrike sweptStrike(const Eigen::Vector3d& hit_normal, const Eigen::Vecto
 using bench::withTolerance;
 
 /// +1 when the sliding ball's path curves left (counter-clockwise seen from above), −1 when right. The sliding
-/// friction opposes the contact slip u = v + R ẑ × ω (spec §6.2).
+/// friction opposes the contact slip u = v + R ẑ × ω (docs/impact_model.md, Motion on the table).
 int turn(const bsp::CueStrikeResult& r, double radius)
 {
   const Eigen::Vector2d v = r.velocity.head<2>();
@@ -119,7 +120,7 @@ TEST(MasseShot, MatchesTheSpecConvergedTableForAllFourCueDirections)
        1.68785,
        0.22049},
   };
-  // Spec §7.4 gives 5–6 digits from fixed-step RK4 (Δt = 2e-4 … 5e-5): 1e-4 relative, vectors by their norm.
+  // The reference gives 5–6 digits from fixed-step RK4 (Δt = 2e-4 … 5e-5): 1e-4 relative, vectors by their norm.
   const double tol = 1e-4;
   for (const Row& row : rows)
   {
@@ -141,7 +142,7 @@ TEST(MasseShot, MatchesTheSpecConvergedTableForAllFourCueDirections)
 
 TEST(MasseShot, PaperPredictionQualitatively)
 {
-  // Errata §5 / spec §9: with the literal cue direction the paper's (57) is a plausibility target only:
+  // docs/validation.md, The massé shot: with the literal cue direction the paper's (57) is a plausibility target:
   // sequence <S1, S2, S4>, a left-turning path, v_x ≈ −1.7 … −2.1, ω_y > 0, ω_x > 0, ω_z < 0.
   const auto r = solved(masse({-0.2761, -0.1388, -0.9511}));
   EXPECT_EQ(r.states, (std::vector<std::string>{"S1", "S2", "S4"}));
@@ -156,8 +157,8 @@ TEST(MasseShot, PaperPredictionQualitatively)
 
 TEST(MasseShot, EtaSweepTrendOfFigure16d)
 {
-  // Spec §7.4: for the literal cue direction the path turns right for η² (cue–ball) = 2, 3, 4 and left from 5; for
-  // the (+, −) direction left at 2, right at 3–6, left from 7.
+  // docs/validation.md, The massé shot: for the literal cue direction the path turns right for η² (cue–ball) = 2, 3,
+  // 4 and left from 5; for the (+, −) direction left at 2, right at 3–6, left from 7.
   const Eigen::Vector3d literal(-0.2761, -0.1388, -0.9511), mirrored(0.2761, -0.1388, -0.9511);
   const int literal_turns[] = {-1, -1, -1, 1, 1, 1};
   const int mirrored_turns[] = {1, -1, -1, -1, -1, 1};
@@ -194,13 +195,14 @@ TEST(CueStrikeInvariants, RandomShots)
     SCOPED_TRACE(k);
     const auto r = solved(s);
     const double r_ball = s.ball_radius;
-    // Angular momentum about the line through the two contact points stays zero (spec §4.4 (1)).
+    // Angular momentum about the line through the two contact points stays zero (docs/impact_model.md, The cue
+    // strike, invariant 1).
     const Eigen::Vector3d moment = 0.4 * r_ball * r.angular_velocity + Eigen::Vector3d::UnitZ().cross(r.velocity);
     const double scale = 0.4 * r_ball * r.angular_velocity.norm() + r.velocity.norm();
     EXPECT_LE(std::abs((r.hit_normal + Eigen::Vector3d::UnitZ()).dot(moment)), 1e-9 * scale);
-    // Energy never increases (spec §4.4 (2)).
+    // Energy never increases (invariant 2).
     EXPECT_LE(kineticEnergy(s, r), 0.5 * s.cue_mass * s.cue_speed * s.cue_speed * (1 + 1e-12));
-    // Linearity in cue speed (spec §2.10).
+    // Linearity in cue speed (invariant 3; docs/impact_model.md, Scaling).
     bsp::CueStrike faster = s;
     faster.cue_speed *= 2.0;
     const auto f = solved(faster);
@@ -214,10 +216,10 @@ TEST(CueStrikeInvariants, RandomShots)
 
 TEST(CueStrikeInvariants, RigidLinksThatSlideNeverGainEnergy)
 {
-  // Jammed strikes found by random sweeps: both contacts chatter into rigid links, which then slide while their
-  // forces grow, and stick again. Their sliding speed used to leave out the growth of the friction cone, ρ̇ = μḟ/κ,
-  // so the spring they stuck with held energy nothing had paid for: these left with 16 %, 43 % and 300 % more
-  // kinetic energy than they came with.
+  // Jammed strikes: both contacts chatter into rigid links, which then slide while their forces grow, and stick
+  // again. A sliding link's sliding speed must include the growth of its friction cone, ρ̇ = μḟ/κ: without it the
+  // spring a link sticks with holds energy nothing has paid for, and such strikes leave with more kinetic energy
+  // than they came with.
   struct Jam
   {
     Eigen::Vector3d cue_direction, hit_normal;
@@ -266,7 +268,7 @@ TEST(CueStrikeInvariants, RigidLinksThatSlideNeverGainEnergy)
     EXPECT_LE(impact.final_kinetic_energy, impact.initial_kinetic_energy * (1 + 1e-9)) << jam.cue_speed;
     // Nothing stores energy but the springs, and a sliding link's cone spring holds ½κρ², ρ = μF_n/κ with F_n its
     // constraint force: the total, kinetic plus strain, only falls from event to event (to the integration's 1e-9).
-    // It rose by up to 10 % where the strain of a sliding link was reported as zero.
+    // Reported without that strain, the total would rise between events.
     double previous = impact.initial_kinetic_energy;
     for (const bsp::ContactEvent& event : impact.events)
     {
@@ -279,7 +281,8 @@ TEST(CueStrikeInvariants, RigidLinksThatSlideNeverGainEnergy)
 
 TEST(CueStrikeInvariants, FrictionlessCentralHitIsBallBallTable)
 {
-  // Spec §4.4 (4): μ = 0, n̂ = ẑ, ĉ = −ẑ is the paper's ball–ball–table collision with the cue as the upper ball.
+  // docs/impact_model.md, The cue strike, invariant 4: μ = 0, n̂ = ẑ, ĉ = −ẑ is the paper's ball–ball–table
+  // collision with the cue as the upper ball.
   bsp::CueStrike s;
   s.cue_mass = 1.0;
   s.ball_mass = 2.0 / std::sqrt(3.0);
@@ -297,10 +300,10 @@ TEST(CueStrikeInvariants, FrictionlessCentralHitIsBallBallTable)
 
 TEST(CueStrikeInvariants, AClothThatSlipsFromTheFirstInstantSlipsAlongItsSlip)
 {
-  // A strike from a random sweep (seed 1, shot 1225): the cloth is pushed out of its friction cone as soon as it is
-  // loaded, so it sticks for an instant with springs of 1e-19, round-off whose direction is noise. Its slip started
-  // along that noise (at the default tolerance, against the slip) and the spin depended on the tolerance by 1e-3
-  // rad/s. Now it must not: default tolerance, 1e-14, and every direction integrated from its start agree to 1e-9.
+  // A strike whose cloth is pushed out of its friction cone as soon as it is loaded, so it sticks for an instant
+  // with springs of round-off, whose direction is noise. Its slip must start along its slip velocity, not along that
+  // noise, so that the result does not depend on the tolerance: default tolerance, 1e-14, and every direction
+  // integrated from its start agree to 1e-9.
   const bsp::CueStrike s =
       sweptStrike({-0.0059866718568623717, -0.8184100040856398, 0.57460353720858826},
                   {-0.63771989546842733, 0.3750190631666474, -0.67281055073872631}, 1.533137555961102,
@@ -325,16 +328,16 @@ TEST(CueStrikeInvariants, SlipsFollowedQuasiSteadilyMatchIntegrationFromTheStart
 {
   bsp::SolverOptions integrated = withTolerance(1e-13);
   integrated.quasi_steady_slip = false;
-  // Shot 963 of the sweep: the tip touches the ball again slipping at 0.05 of the collision's speed. Its slip
-  // direction was followed quasi-steadily until its cone spring reached 1e-4, a relaxation time ρ/|v_t| of 2e-3
-  // where the first-order lag is off by 1e-5 (rad/s). It is now released by its relaxation time (5.6e-4 at the
-  // default tolerance) and followed with the second-order lag: within 1e-7 of integration from the start.
+  // The tip touches the ball again slipping at 0.05 of the collision's speed: a slow slip, whose relaxation time
+  // ρ/|v_t| grows past the quasi-steady limit while its cone spring is still short. Its direction must be released
+  // by its relaxation time (5.6e-4 at the default tolerance), not by its cone length, and followed with the
+  // second-order lag until then: within 1e-7 of integration from the start.
   const bsp::CueStrike slow_tip =
       sweptStrike({0.43974713737647586, 0.53888293038194068, 0.71848983466167926},
                   {-0.21859785974501489, -0.39627898953164026, -0.89172750219485819}, 3.6471754677974122,
                   {0.61575037877792094, 0.69176609668587707, 2.5721473793704277}, 0.15254774237691854);
-  // Shot 951: the cloth starts with a slip of round-off (1e-18) and sticks at once. A release criterion that scaled
-  // with the slip speed alone released it on that noise, and the ball left at 3.98 instead of 3.87 m/s.
+  // The cloth starts with a slip of round-off (1e-18) and sticks at once. A release criterion that scaled with the
+  // slip speed alone would release it on that noise (the relaxation time takes |v_t| floored at round-off).
   const bsp::CueStrike cloth_at_rest =
       sweptStrike({-0.84224125288421292, -0.08492203412386945, 0.53237009688777204},
                   {0.92603154864526604, -0.36266782884654652, -0.10458306188567118}, 3.2641601515557372,
@@ -352,11 +355,11 @@ TEST(CueStrikeInvariants, SlipsFollowedQuasiSteadilyMatchIntegrationFromTheStart
 
 TEST(CueStrikeInvariants, APlasticTipTouchingAgainWhileItSlidesEnds)
 {
-  // Two strikes from a sweep with wide ranges (plastic tips, soft tables, small cloth friction). The tip leaves the
-  // ball and touches it again at once, a rigid link sliding with a finite force from its first instant. The first
-  // strike followed that slip quasi-steadily at 25 times the limit of its relaxation time (its release guard started
-  // above zero and never rose) and ran to the step bound; the second did the same while the release went by cone
-  // length. Both must end, as integration from the start does (same events, 1e-9 m/s and rad/s).
+  // Two strikes with wide ranges (plastic tips, soft tables, small cloth friction). The tip leaves the ball and
+  // touches it again at once, a rigid link sliding with a finite force from its first instant: its slip starts the
+  // state beyond the quasi-steady limit of its relaxation time, so its release guard starts above zero and never
+  // rises, and the slip must be released at once rather than followed. Both must end, as integration from the start
+  // does (same events, 1e-9 m/s and rad/s).
   bsp::CueStrike soft_cloth =
       sweptStrike({-0.51546468129134915, -0.49097920032930936, 0.70230733100630516},
                   {0.18151937726589853, 0.98333698554480098, -0.0099543225115667332}, 0.66625016814202542,
@@ -386,11 +389,10 @@ TEST(CueStrikeInvariants, APlasticTipTouchingAgainWhileItSlidesEnds)
 
 TEST(CueStrikeInvariants, AJammedTipChattersToItsLimitAtAnyTolerance)
 {
-  // A strike from the same sweep (shot 396): the tip stays pressed on the ball and chatters, some 30 ends of
-  // compression, each with a brief slip, under a force of order one; its deformation F/k shrinks as k grows. Once it
-  // fell below the integrator's absolute tolerance its cycles had no correct digit: the spin came out 6.6e-3 rad/s
-  // from the converged limit at the default tolerance, 4e-2 at 1e-10. The chatter is now cut where the integrator
-  // stops resolving it (SolverOptions::chatter_resolution): within 1e-3 of a run at 1e-14, and within 2e-3 at 1e-10.
+  // The tip stays pressed on the ball and chatters, some 30 ends of compression, each with a brief slip, under a
+  // force of order one; its deformation F/k shrinks as k grows. Once it falls below the integrator's absolute
+  // tolerance its cycles have no correct digit, so the chatter must be cut where the integrator stops resolving it
+  // (SolverOptions::chatter_resolution): within 1e-3 of a run at 1e-14, and within 2e-3 at 1e-10.
   const bsp::CueStrike s =
       sweptStrike({0.071073528144835946, -0.32959503703661114, 0.94144339455852588},
                   {0.26118970035386446, 0.66031324152832349, -0.70410678415380734}, 2.2777475086951036,

@@ -1,4 +1,5 @@
-// Degenerate collisions (spec §5): plastic contacts and extreme stiffness ratios approach their closed-form limits.
+// Degenerate collisions (docs/impact_model.md, Chatter limits and rigid links): plastic contacts and extreme
+// stiffness ratios approach their closed-form limits.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,8 +25,8 @@ bsp::BallBallTable collision(double ratio, double e1, double e2)
 /// ball 2 then compresses the soft table alone and rebounds. The model reactivates a contact when its bodies
 /// approach again, not when a gap closes, so as soon as ball 2 catches ball 1 (while the table spring is still
 /// loaded) the ball–ball contact, infinitely stiff by comparison, carries ball 1 along: both leave with the
-/// velocity that the table spring's remaining energy gives their combined mass. (This corrects spec §5, which
-/// describes a sequence of completed pairwise impacts.) Valid when ball 1 rebounds and is caught.
+/// velocity that the table spring's remaining energy gives their combined mass, not as a sequence of completed
+/// pairwise impacts. Valid when ball 1 rebounds and is caught.
 Eigen::Vector2d softTableLimit(double m1, double m2, double e1, double e2, double v0)
 {
   const double vc = m1 * v0 / (m1 + m2);
@@ -42,7 +43,8 @@ Eigen::Vector2d softTableLimit(double m1, double m2, double e1, double e2, doubl
 
 TEST(Degenerate, InfinitelyStiffTableMakesASingleImpact)
 {
-  // k2/k1 → ∞: ball 2 is part of the table, v1 = −e1 v0, v2 = 0 (spec §5). Error shrinks with the ratio.
+  // k2/k1 → ∞: ball 2 is part of the table, v1 = −e1 v0, v2 = 0 (the paper's footnote 16). Error shrinks with the
+  // ratio.
   double previous_error = 1.0;
   for (double ratio : {1e2, 1e4, 1e6})
   {

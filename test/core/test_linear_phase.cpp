@@ -82,7 +82,7 @@ TEST(LinearPhase, StickingContactsMatchNumericalIntegration)
   impact.velocity = {0.3, 0.0, -1.0};
   impact.table = {0.6, 1e9, 7.0};
   expectSameSolution(impact, "pure stick");
-  impact.velocity = {0.3, -0.2, -1.0};  // spec §7.2 case E: stick, then slip
+  impact.velocity = {0.3, -0.2, -1.0};  // docs/validation.md, One compliant contact, case E: stick, then slip
   impact.angular_velocity = {1.5, 0.4, 0.0};
   impact.table = {0.5, 0.25, 7.0};
   expectSameSolution(impact, "stick then slip");

@@ -1,7 +1,8 @@
 // impact_report: solves the paper's ball–ball–table examples (Table 1 / Fig. 1, Fig. 7, Fig. 9) and prints, for
 // each, the state sequence with impulses, velocities and energies at every state start, the contact events, the
-// final velocities and the energy lost, beside the paper's printed values and the converged reference values of
-// ../shared/spec/paper_errata.md; then the massé cue strike of §9.2 beside the paper's prediction and measurement.
+// final velocities and the energy lost, beside the paper's printed values and the converged reference values
+// (docs/validation.md, The paper's collisions); then the massé cue strike of §9.2 beside the paper's prediction and
+// measurement (docs/validation.md, The massé shot).
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -19,7 +20,7 @@ struct Example
   const char* title;
   bsp::BallBallTable collision;
   const char* printed;    // the paper's final velocities
-  const char* converged;  // errata reference
+  const char* converged;  // converged reference (docs/validation.md)
 };
 
 void printStates(const bsp::ImpactResult& r)
@@ -73,7 +74,7 @@ void printVector(const char* label, const Eigen::Vector3d& v)
   std::printf("  %-34s (%9.5f, %9.5f, %9.5f)\n", label, v.x(), v.y(), v.z());
 }
 
-/// The massé shot of §9.2 with the errata's mass and radius and the literal cue direction.
+/// The massé shot of §9.2 with the corrected mass and radius and the literal cue direction (docs/validation.md).
 bool reportMasse()
 {
   std::printf("\nThe massé shot of section 9.2 (m = 0.17 kg, r = 0.0286 m; see README for the corrections)\n");

@@ -5,8 +5,8 @@
 
 namespace billiard_shot_planner
 {
-/// The constitutive law of one contact (paper §2–3, spec §2): a normal virtual spring whose stiffness grows by
-/// 1/e² at every end of compression, and optionally two tangential springs with Coulomb friction.
+/// The constitutive law of one contact (paper §2–3 and §8.1; docs/impact_model.md): a normal virtual spring whose
+/// stiffness grows by 1/e² at every end of compression, and optionally two tangential springs with Coulomb friction.
 struct ContactLaw
 {
   double restitution = 1.0;  ///< energetic coefficient of restitution e, in [0, 1]

@@ -6,7 +6,8 @@
 
 namespace billiard_shot_planner
 {
-/// Events of the state transition diagram (paper §3, spec §2.7 and §4.3).
+/// Events of the state transition diagram (paper §3; docs/impact_model.md, Normal compliance and the state
+/// transition diagram).
 enum class ContactEventType
 {
   EndOfCompression,      ///< normal velocity turns separating: k ← k/e², E ← e²E
@@ -60,10 +61,12 @@ struct ImpactResult
   Eigen::VectorXd velocity;              ///< generalised velocity after the impact
   std::vector<ContactImpulse> impulses;  ///< total impulse per contact
   std::vector<int> ends_of_compression;  ///< per contact
-  std::vector<bool> initially_slipping;  ///< per contact: tangential mode at the first instant (spec §2.8)
-  std::vector<ImpactState> states;       ///< the state sequence, terminal state (no active contact) last
-  std::vector<ContactEvent> events;      ///< every contact event in order
-  std::vector<ImpactSnapshot> samples;   ///< impulse curve, when SolverOptions::record_samples
+  /// Per contact: tangential mode at the first instant (docs/impact_model.md, Coulomb friction and tangential
+  /// compliance, and Resting contacts).
+  std::vector<bool> initially_slipping;
+  std::vector<ImpactState> states;      ///< the state sequence, terminal state (no active contact) last
+  std::vector<ContactEvent> events;     ///< every contact event in order
+  std::vector<ImpactSnapshot> samples;  ///< impulse curve, when SolverOptions::record_samples
   double initial_kinetic_energy = 0.0;
   double final_kinetic_energy = 0.0;
   /// True when a contact chattered (an infinite state sequence) and the result is that sequence's limit.

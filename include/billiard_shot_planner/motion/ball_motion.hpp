@@ -7,7 +7,7 @@
 
 namespace billiard_shot_planner
 {
-/// How the deceleration of a rolling ball is written (spec §6.2).
+/// How the deceleration of a rolling ball is written (docs/impact_model.md, Motion on the table).
 enum class RollingModel
 {
   Paper,     ///< Jia et al.: a = (5/7) μ_r g (the paper's μ_r = 0.0209727)
@@ -18,7 +18,8 @@ enum class RollingModel
 /// work and the output of a call bounded whatever the friction coefficients.
 constexpr double MAX_TRAJECTORY_TIME = 600.0;
 
-/// Friction and stopping rules of the ball's motion on the table (spec §6). Defaults: the paper's measured values.
+/// Friction and stopping rules of the ball's motion on the table (docs/impact_model.md, Motion on the table).
+/// Defaults: the paper's measured values.
 struct MotionParameters
 {
   double gravity = 9.81;                ///< m/s²

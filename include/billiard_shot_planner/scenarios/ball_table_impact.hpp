@@ -10,7 +10,7 @@
 namespace billiard_shot_planner
 {
 /// A solid ball (inertia 2/5 m r²) hitting the fixed table plane z = 0 with one compliant contact: a landing after
-/// a jump, and the single-contact tests of spec §7.2. Table frame, z up.
+/// a jump, and the single-contact cases of docs/validation.md, One compliant contact. Table frame, z up.
 struct BallTableImpact
 {
   double mass = 1.0;

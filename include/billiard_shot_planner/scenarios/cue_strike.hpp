@@ -14,7 +14,7 @@
 namespace billiard_shot_planner
 {
 /// A cue tip's effective mass across the cue's axis that holds it on the axis: the paper's shooter, whose cue ran
-/// in ball bearings (§9.1, eq. 48).
+/// in ball bearings (§9.2, eq. 48).
 constexpr double CUE_HELD_ON_AXIS = std::numeric_limits<double>::infinity();
 
 /// A hand-held (or robot-held) cue's end mass: the part of the shaft behind the tip that moves sideways with it
