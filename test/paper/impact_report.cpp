@@ -77,7 +77,7 @@ void printVector(const char* label, const Eigen::Vector3d& v)
 /// The massé shot of §9.2 with the corrected mass and radius and the literal cue direction (docs/validation.md).
 bool reportMasse()
 {
-  std::printf("\nThe massé shot of section 9.2 (m = 0.17 kg, r = 0.0286 m; see README for the corrections)\n");
+  std::printf("\nThe massé shot of section 9.2 (m = 0.17 kg, r = 0.0286 m; see docs/validation.md for the corrections)\n");
   const auto result = bsp::solve(fixtures::paperMasseStrike());
   if (!result)
   {
@@ -121,7 +121,7 @@ try
        "v1 = 0.9451146, v2 = 0.3040649"},
       {"Fig. 9: restarts of compression (m2 = 0.5)",
        {1.0, 0.5, 1.0, 0.9, 0.7, -1.0},
-       "(sequence printed as S1, S3, S4; see errata section 3)",
+       "(sequence printed as S1, S3, S4; see docs/validation.md, Fig. 7)",
        "v1 = 0.6368395, v2 = 0.1558096, S1, S2, S4"},
   };
   bool ok = true;

@@ -6,7 +6,7 @@
 
 namespace billiard_shot_planner
 {
-/// Solves one problem given as JSON (the format of the `impact_solve` program, see README) and returns the result
+/// Solves one problem given as JSON (the format of the `impact_solve` program, docs/cli.md) and returns the result
 /// as JSON. Malformed or invalid input gives an Error naming the field; nothing throws.
 ///
 /// Problems: "ball_ball_table", "chain". Every problem accepts an optional "solver" object
