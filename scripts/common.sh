@@ -46,7 +46,10 @@ configure_and_build() {
   # catkin's cached test environment puts the devel space's Python path on PYTHONPATH only if it exists at
   # configure time; on a fresh clone the generated message modules land there after the first build.
   mkdir -p "${BUILD_DIR}/devel/lib/python3/dist-packages"
-  cmake -S "$REPO_ROOT" -B "$BUILD_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+  # The install space is build/install (scripts/test_install checks it); cmake --install build --prefix <dir>
+  # installs elsewhere.
+  cmake -S "$REPO_ROOT" -B "$BUILD_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_INSTALL_PREFIX="${BUILD_DIR}/install" "$@" >/dev/null
   log "Building"
   make -C "$BUILD_DIR" -j"$(nproc)" --no-print-directory
 }
