@@ -77,7 +77,7 @@ void printVector(const char* label, const Eigen::Vector3d& v)
 /// The massé shot of §9.2 with the corrected mass and radius and the literal cue direction (docs/validation.md).
 bool reportMasse()
 {
-  std::printf("\nThe massé shot of section 9.2 (m = 0.17 kg, r = 0.0286 m; see docs/validation.md for the corrections)\n");
+  std::printf("\nThe massé shot of section 9.2 (m = 0.17 kg, r = 0.0286 m; corrections: docs/validation.md)\n");
   const auto result = bsp::solve(fixtures::paperMasseStrike());
   if (!result)
   {
