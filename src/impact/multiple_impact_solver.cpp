@@ -82,6 +82,7 @@ public:
         space_(buildContactSpace(problem)),
         contacts_(initialContactStates(problem, space_)),
         dynamics_(space_, contacts_, quasiSteadyRelaxation(options)),
+        springs_(dynamics_),
         y_(static_cast<std::size_t>(2 * space_.size), 0.0),
         buffer_(y_.size())
   {
@@ -125,7 +126,7 @@ private:
     return false;
   }
 
-  ImpactSnapshot snapshot(const double* y, double t) const
+  ImpactSnapshot snapshot(const double* y, double t)
   {
     ImpactSnapshot snap;
     snap.time = t * space_.time_scale;
@@ -139,7 +140,7 @@ private:
     for (Eigen::Index i = 0; i < n; ++i)
     {
       snap.normal_impulses(i) = y[space_.offset[i]] * space_.impulse_scale;
-      snap.strain_energies(i) = dynamics_.strainEnergy(i, y) * space_.energy_scale;
+      snap.strain_energies(i) = dynamics_.strainEnergy(i, y, scratch_) * space_.energy_scale;
     }
     return snap;
   }
@@ -184,7 +185,7 @@ private:
   /// The contact's slip direction is integrated from now on, starting where it was following the slip.
   void releaseDirection(std::size_t contact)
   {
-    const Eigen::Vector2d direction = dynamics_.springDirection(contact, y_.data());
+    const Eigen::Vector2d direction = dynamics_.slipDirection(contact, y_.data(), scratch_);
     contacts_[contact].quasi_steady = false;
     double* carrier = y_.data() + space_.size + space_.offset[contact] + 1;
     carrier[0] = direction.x();
@@ -333,10 +334,10 @@ private:
     if (!relaxesFast(i, kinematics))
       return false;
     ContactState& contact = contacts_[i];
-    const Eigen::Vector2d integrated = dynamics_.springDirection(i, y);
+    const Eigen::Vector2d integrated = dynamics_.slipDirection(i, y, scratch_);
     contact.quasi_steady = true;
     dynamics_.refresh();
-    const bool agrees = (dynamics_.springDirection(i, y) - integrated).norm() <= DIRECTION_AGREEMENT;
+    const bool agrees = (dynamics_.slipDirection(i, y, scratch_) - integrated).norm() <= DIRECTION_AGREEMENT;
     contact.quasi_steady = false;
     dynamics_.refresh();
     return agrees;
@@ -487,7 +488,7 @@ private:
         return stepLimitError();
       if (auto status = checkClock(); !status)
         return status.error();
-      const auto [t0, t1] = stepper.do_step(std::cref(dynamics_));
+      const auto [t0, t1] = stepper.do_step(std::ref(springs_));
       samples_ = guardSamples(stepper, t0, t1);
       guard_values_.conservativeResize(samples_ + 1, Eigen::NoChange);
       sampleGuards(stepper, guards, t0, t1, first_row_known);
@@ -718,6 +719,8 @@ private:
   ContactSpace space_;
   std::vector<ContactState> contacts_;
   ContactDynamics dynamics_;
+  SpringSystem springs_;     ///< the dynamics as the integrator's system
+  ForceEvaluation scratch_;  ///< of the force evaluations that only a slip direction or a strain energy is read from
   LinearPhaseStepper closed_form_;  ///< rebuilt at every linear state (its storage kept)
   /// Numerical steppers, made at their first use and restarted at every state (their storage kept).
   std::optional<DenseStepper> plain_stepper_;
