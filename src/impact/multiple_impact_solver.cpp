@@ -328,19 +328,14 @@ private:
   }
 
   /// Whether contact i slides on an integrated direction that relaxes faster than the quasi-steady limit and has
-  /// relaxed onto its quasi-steady direction (to DIRECTION_AGREEMENT) at y, whose kinematics are given.
+  /// relaxed onto its quasi-steady direction (to DIRECTION_AGREEMENT) at y, whose kinematics are given. A query: the
+  /// quasi-steady direction is the one following the slip would give, the contact's mode stays as it is.
   bool hasRelaxedOntoItsSlip(std::size_t i, const double* y, const Kinematics& kinematics)
   {
     if (!relaxesFast(i, kinematics))
       return false;
-    ContactState& contact = contacts_[i];
-    const Eigen::Vector2d integrated = dynamics_.slipDirection(i, y, scratch_);
-    contact.quasi_steady = true;
-    dynamics_.refresh();
-    const bool agrees = (dynamics_.slipDirection(i, y, scratch_) - integrated).norm() <= DIRECTION_AGREEMENT;
-    contact.quasi_steady = false;
-    dynamics_.refresh();
-    return agrees;
+    const Eigen::Vector2d integrated = dynamics_.carrierDirection(i, y);
+    return (dynamics_.followedSlipDirection(i, y, scratch_) - integrated).norm() <= DIRECTION_AGREEMENT;
   }
 
   /// Whether at the end t1 of a step some integrated slip direction has relaxed onto its quasi-steady one, so that
