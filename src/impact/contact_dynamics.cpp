@@ -13,14 +13,15 @@ namespace
 /// direction. Where the spring is shorter — the first and last instants of a contact that slides from its start or
 /// to its end — the direction would turn faster than the dynamics around it, a stiff equation that explicit
 /// integration can only follow in tiny steps; there the friction force is of the same small order, so bounding
-/// the rate changes no result digit (massé strike: identical to 10 digits with 1e-9 and 1e-5). It is joined
-/// smoothly (a hypotenuse, not a maximum) so that the dynamics stays analytic up to and through a separation, where
-/// integrator steps end: a kink there cost hundreds of rejected steps.
+/// the rate leaves the result unchanged far below the solver's tolerance. It is joined smoothly (a hypotenuse, not a
+/// maximum) so that the dynamics stays analytic up to and through a separation, where integrator steps end: a kink
+/// there makes the step control reject step after step.
 constexpr double SLIP_LENGTH_FLOOR = 1e-6;
 
 /// Normal speed (dimensionless: the largest initial contact speed is 1) below which the separation clock no longer
 /// follows v_n down to zero. Any smooth positive clock gives the same solution; this one only sets how much of a
-/// restitution phase runs on the slowed clock. Measured on the massé strike: 0.3 to 1 equally good.
+/// restitution phase runs on the slowed clock, and the cost of a solve varies little with it between 0.3 and 1.
+/// docs/engine.md, "Separation clock".
 constexpr double CLOCK_SPEED_FLOOR = 0.5;
 }  // namespace
 
@@ -59,7 +60,7 @@ void ContactDynamics::relativeVelocity(const double* y, Eigen::VectorXd& velocit
 {
   // The integrator and the guard samples call this thousands of times per solve. On the sizes of one ball's
   // contacts Eigen's dynamic product spends more on set-up than on arithmetic; a fixed-size product is unrolled and
-  // vectorised (a third of the instructions on the cue strike's 6 rows, a fifth on ball–ball–table's 2).
+  // vectorised.
   velocity.resize(space_.size);
   switch (space_.size)
   {
@@ -160,7 +161,7 @@ void ContactDynamics::followSlip(const double* y, std::size_t also_following, Ei
 {
   // The lag that keeps ρθ̇ = |v_t| sin(ψ − θ), θ the slip direction's angle and ψ the slip velocity's, on the slow
   // manifold: sin δ = ε(ψ̇ − δ̇) with δ = ψ − θ and ε = ρ/|v_t|, expanded in ε. First order (δ̇ = 0) leaves errors
-  // of order ε³ in the friction, second order of order ε⁴.
+  // of order ε³ in the friction, second order of order ε⁴ (docs/engine.md, "Quasi-steady slip").
   relativeVelocity(y, scratch.velocity);
   firstOrderLags(y, scratch.velocity, also_following, force, directions, scratch.lags);
   addLagRates(y, force, also_following, scratch);
@@ -208,8 +209,9 @@ void ContactDynamics::firstOrderLags(const double* y, const Eigen::VectorXd& w, 
     const Eigen::Vector2d a_t(space_.delassus.row(row + 1).dot(force), space_.delassus.row(row + 2).dot(force));
     const double turn_rate = (v_t.x() * a_t.y() - v_t.y() * a_t.x()) / (speed * speed);
     // The true spring length, not the floored one of the integrated slip (coneLength): here it only sets the lag,
-    // no stiffness to bound. With the floor, 1e-6 against a true 3e-10, a slow turning slip (3e-5, a rolling ball's
-    // cloth contact under a cushion hit) lagged by 90°, and stuck and slipped again 53 000 times.
+    // no stiffness to bound. The floor can be orders of magnitude above a lightly loaded cone (a rolling ball's cloth
+    // contact under a cushion hit), and a slowly turning slip would then lag by up to 90° and stick and slip again
+    // without end.
     lags[i].relaxation = contacts_[i].coneLength(force(row)) / speed;
     lags[i].angle = std::asin(std::clamp(lags[i].relaxation * turn_rate, -1.0, 1.0));
   }
@@ -366,7 +368,7 @@ double ContactDynamics::strainEnergy(std::size_t contact, const double* y, Force
     normal_force = scratch.force(space_.offset[contact]);
   }
   // A link that pulls is released at the instant it is made, and has no cone meanwhile (squared, its force would
-  // read as strain energy, up to 1 % of a random strike's).
+  // read as strain energy that no spring holds).
   const double cone = state.coneLength(std::max(normal_force, 0.0));
   return normal + 0.5 * state.kappa * cone * cone;
 }
@@ -421,17 +423,18 @@ void ContactDynamics::springRates(std::size_t contact, const double* y, const Ei
   rates[1] = rates[2] = 0.0;
   if (!state.active())
     return;
+  // docs/impact_model.md, "Coulomb friction and tangential compliance".
   if (!state.slipping)
   {
-    rates[1] = w(row + 1);  // stick: the contact particle is at rest on B (spec §2.6)
+    rates[1] = w(row + 1);  // stick: the contact particle is at rest on B
     rates[2] = w(row + 2);
     return;
   }
   if (follows_slip)
     return;  // the direction follows the slip (followSlip); the carrier waits for the release
-  // Slip: ṡ_t = v_t − σŝ (spec §2.6), whose radial part only keeps |s_t| = μη²|s_n| on the cone. The friction is
-  // −μF_nŝ, so only the direction ŝ matters: the state carries it at a fixed length (never through zero, where it
-  // would flip) and turns it at the physical rate, directionRate's, scaled by the carrier's length.
+  // Slip: ṡ_t = v_t − σŝ, whose radial part only keeps |s_t| = μη²|s_n| on the cone. The friction is −μF_nŝ, so
+  // only the direction ŝ matters: the state carries it at a fixed length (never through zero, where it would flip)
+  // and turns it at the physical rate, directionRate's, scaled by the carrier's length.
   const double* s = y + space_.size + row;
   const Eigen::Vector2d carrier(s[1], s[2]);
   const double length = carrier.norm();

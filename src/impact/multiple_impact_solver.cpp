@@ -28,8 +28,9 @@ namespace detail
 namespace
 {
 /// Closed-form steps, in radians of the fastest mode: the guards are sums of sines of at most that frequency, so
-/// with SAMPLES_PER_STEP samples a step sees any crossing pair more than a quarter radian apart by their signs, and
-/// firstRise looks between the samples for closer ones. Finer when the impulse curve is recorded for plots.
+/// with SampledCrossingSearch::SAMPLES_PER_STEP samples a step sees any crossing pair more than a quarter radian apart
+/// by their signs, and firstRise looks between the samples for closer ones. Finer when the impulse curve is recorded
+/// for plots. docs/engine.md, "Closed form of linear phases".
 constexpr double RADIANS_PER_CLOSED_FORM_STEP = 1.0;
 constexpr double RADIANS_PER_RECORDED_STEP = 0.125;
 
@@ -39,7 +40,9 @@ constexpr double UNRESOLVED_SPEED = 100.0;
 /// Zero-time transitions one contact may make at one instant (see ImpactSolver::settle).
 constexpr int MAX_SWITCHES_PER_INSTANT = 6;
 
-/// Integrates the spring dynamics from event to event and runs the state transition diagram.
+/// Integrates the spring dynamics from event to event and runs the state transition diagram (docs/engine.md,
+/// "Formulation"). Which slip directions follow their slip is QuasiSteadySlip's to decide, where a numerically
+/// integrated state's next transition lies SampledCrossingSearch's to find.
 class ImpactSolver
 {
 public:
@@ -141,7 +144,8 @@ private:
     return checkClock();
   }
 
-  /// The wall-clock bound of one solve (SolverOptions::max_seconds), read at every event and integrator step.
+  /// The wall-clock bound of one solve (SolverOptions::max_seconds), read at every event and integrator step
+  /// (docs/engine.md, "Bounds and errors").
   Status checkClock() const
   {
     if (std::chrono::steady_clock::now() <= deadline_)
@@ -176,7 +180,7 @@ private:
     dynamics_.refresh();
     // A contact whose rigid-link force and grazing acceleration disagree in sign (friction coupling, as in
     // Painlevé's paradox) could switch forever at one instant: after a few switches it is left as it is, and its
-    // guards decide from then on.
+    // guards decide from then on (docs/impact_model.md, "Chatter limits and rigid links").
     switches_.assign(contacts_.size(), 0);
     settled_.assign(contacts_.size(), false);
     while (true)
@@ -237,20 +241,21 @@ private:
   {
     const bool closed_form = options_.closed_form_linear_phases && tryClosedForm();
     // A chatter is cut where the method stops resolving it (SolverOptions::chatter_resolution): the integrator
-    // holds springs to its absolute tolerance, the closed form to round-off. Cut in a closed-form chain, a contact
-    // that merely touched lightly three times became a rigid link and the chain ended 7e-3 off.
+    // holds springs to its absolute tolerance, the closed form to round-off. Cut at the integrator's resolution in a
+    // closed form, a contact that merely touches lightly three times would become a rigid link (docs/engine.md,
+    // "Chatter and rigid links").
     chatter_.deformation = closed_form ? 0.0 : options_.chatter_resolution * options_.absolute_tolerance;
     if (closed_form)
       return advanceAffine();
     // Likewise a normal velocity: the integrator holds it to about its absolute tolerance. A contact at rest at the
-    // far end of a chain, whose velocity is that noise until the collision reaches it, ended its compression at
-    // t = 0 on it, separated and came back: 129 of 2 000 random chains ended more than 1e-3 off the closed form.
+    // far end of a chain has that noise for its velocity until the collision reaches it: without the floor it would
+    // end its compression at t = 0 on the noise, separate and come back.
     const double separation_floor = std::max(VELOCITY_TOLERANCE, UNRESOLVED_SPEED * options_.absolute_tolerance);
     slip_.startIntegratedState(y_);
     const std::vector<Guard>& guards = armedGuards(contacts_, space_, guards_);
     const double omega = fastestFrequency();
     // 0.1 rad of the fastest mode, near the steps the tolerance allows: Bulirsch–Stoer grows a step at most fourfold
-    // per step, so a smaller start costs steps at every state (0.01 rad: massé strike +22 % instructions).
+    // per step, so a smaller start costs steps at every state.
     const double first_step = 0.1 / omega;
     if (options_.separation_clock &&
         std::any_of(contacts_.begin(), contacts_.end(), [](const ContactState& c) { return c.slidingInRestitution(); }))
@@ -426,7 +431,8 @@ private:
   Kinematics event_kinematics_{};   ///< at the current instant, for transitions
   ForceEvaluation energy_scratch_;  ///< of strainEnergy
   Eigen::VectorXd momentum_;        ///< scratch of kineticEnergy
-  // Storage kept across the solve (a short impact is a few states; allocating per event cost a third of it).
+  // Storage kept across the solve (a short impact is a few states, and allocating per event would be a large part
+  // of its cost).
   std::vector<Guard> guards_;
   PerGuard<std::optional<AffineGuard>> affine_guards_;  ///< of guards_
   AffineCrossingSearch affine_search_;

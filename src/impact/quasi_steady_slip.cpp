@@ -24,9 +24,9 @@ QuasiSteadySlip::QuasiSteadySlip(const SolverOptions& options, const ContactSpac
 {
 }
 
-/// The second-order lag leaves errors of order ε⁴ in the friction (a cushion hit on the cloth:
-/// 1.1e-12 at 5e-4, 1.1e-11 at 1e-3, 1.7e-10 at 2e-3, against integration from the start), so the limit is
-/// (tolerance/10)^¼: 5.6e-4 at the default tolerance. At most 1e-2, where the expansion's terms no longer shrink.
+/// The second-order lag leaves errors of order ε⁴ in the friction, so the limit is (tolerance/10)^¼, which keeps them
+/// a tenth of the tolerance: 5.6e-4 at the default tolerance. At most 1e-2, where the expansion's terms no longer
+/// shrink.
 double QuasiSteadySlip::relaxationLimit(const SolverOptions& options)
 {
   return std::min(std::pow(0.1 * options.relative_tolerance, 0.25), 1e-2);
@@ -78,9 +78,8 @@ void QuasiSteadySlip::startIntegratedState(OdeState& y)
 
 /// A contact that follows its slip is released once its relaxation time reaches the quasi-steady limit, by a
 /// guard that rises through it. One that starts a state beyond it is released at once: a rigid link reactivated
-/// sliding (a plastic tip touching again) carries a finite force from its first instant, its guard started above
-/// zero and never rose, and the lag stayed in use at 25 times the limit (a random strike, which then ran to the
-/// step bound).
+/// sliding (a plastic tip touching again) carries a finite force from its first instant, so its guard starts above
+/// zero and never rises through it, and the lag would stay in use far beyond the limit.
 void QuasiSteadySlip::releaseSlowRelaxations(OdeState& y)
 {
   if (!std::any_of(contacts_.begin(), contacts_.end(), [](const ContactState& c) { return c.followsSlip(); }))
@@ -95,8 +94,8 @@ void QuasiSteadySlip::releaseSlowRelaxations(OdeState& y)
 /// short against its slip) turns it at |v_t|/ρ, a stiff equation for explicit integration. In an integrated
 /// state it follows its slip quasi-steadily instead, as a slip from relaxed springs does, when its direction
 /// already agrees with the quasi-steady one to DIRECTION_AGREEMENT (it has relaxed onto it; one that has just slipped
-/// from a loaded spring has not, and stays integrated). A cushion grazed at 4e-8 m/s, loading its contacts with 1e-8,
-/// took 300 000 steps of 5e-6 otherwise (random table sweep).
+/// from a loaded spring has not, and stays integrated). Integrated, a barely grazed cushion, its contacts loaded
+/// lightly, would take hundreds of thousands of tiny steps.
 void QuasiSteadySlip::followShortSlips(const OdeState& y)
 {
   if (!enabled_)
@@ -126,8 +125,7 @@ bool QuasiSteadySlip::relaxesFast(std::size_t i, const Kinematics& at) const
 
 /// A sliding contact on its way to separation has a cone that shrinks fast against its slip where ρ̇ = μη²v_n is
 /// above SEPARATION_RATE_FOLLOW of |v_t|. Its direction is then left to the separation clock, which follows it to
-/// the end in a few steps; handed to the quasi-steady lag, the bench's three cushion hits took 11 % more
-/// instructions.
+/// the end in a few steps, fewer than the quasi-steady lag's checks and switches would cost.
 bool QuasiSteadySlip::shrinksToSeparation(std::size_t i, const Kinematics& at) const
 {
   const ContactState& contact = contacts_[i];
@@ -154,8 +152,8 @@ void QuasiSteadySlip::restartChecks()
 }
 
 /// A tip that slips from a loaded spring and turns into a rigid link has not relaxed when its state starts, but
-/// does a few relaxation times later: integrated on, with a relaxation time of 1e-6 of the collision's, a grazing
-/// hit on a nearly plastic cushion took 153 000 steps (a random table of a wide sweep, 5.9 s).
+/// does a few relaxation times later: integrated on, with a relaxation time of a millionth of the collision's (a
+/// grazing hit on a nearly plastic cushion), it would take steps of that order to the state's end.
 bool QuasiSteadySlip::anIntegratedSlipHasRelaxed(const Kinematics& at, std::size_t step)
 {
   // The same slips as anIntegratedSlipRelaxesFast: one shrinking to separation stays on the clock even when another
@@ -164,8 +162,8 @@ bool QuasiSteadySlip::anIntegratedSlipHasRelaxed(const Kinematics& at, std::size
     if (!shrinksToSeparation(i, at) && hasRelaxedOntoItsSlip(i, at, scratch_))
       return true;
   // A slip that has not relaxed may take long to (on its way to separation its cone shrinks faster than its
-  // direction turns, and it never does): the checks, three force evaluations each, back off geometrically. Every
-  // step, they cost the bench's three cushion hits 12 % more instructions.
+  // direction turns, and it never does): the checks, three force evaluations each, back off geometrically so that
+  // such a state does not pay for one at every step.
   check_interval_ *= 2;
   next_check_ = step + check_interval_;
   return false;

@@ -14,7 +14,8 @@ namespace billiard_shot_planner
 namespace detail
 {
 /// Which sliding contacts have their slip direction follow the slip quasi-steadily (ContactState::quasi_steady)
-/// instead of integrating it, and the switches between the two (SolverOptions::quasi_steady_slip).
+/// instead of integrating it, and the switches between the two (SolverOptions::quasi_steady_slip; docs/engine.md,
+/// "Quasi-steady slip").
 ///
 /// A slip direction relaxes onto the slip in the time ε = ρ/|v_t|, ρ = μF_n/κ its spring on the friction cone: a
 /// stiff equation for the explicit integrator where ε is short. There the direction follows the slip with its

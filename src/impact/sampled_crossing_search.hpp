@@ -37,7 +37,7 @@ const std::vector<FiredGuard>& earliestCrossings(const std::vector<FiredGuard>& 
 /// The crossings of a state's guards found from samples along the steps of its stepper: the numerically integrated
 /// states, and the closed-form ones that AffineCrossingSearch does not take. Each step samples every guard at evenly
 /// spaced instants, looks for its first rise through zero among them (firstRise, which samples finer where a rise
-/// may hide between two samples) and locates its zero with TOMS 748.
+/// may hide between two samples) and locates its zero with TOMS 748 (docs/engine.md, "Event location").
 ///
 /// Steppers: DenseStepper, SeparationClockStepper (in its clock u) and LinearPhaseStepper. Holds references to the
 /// solver's contact space, contact states and dynamics; evaluates states into storage of its own.
@@ -131,8 +131,8 @@ private:
   /// Guard values at the start of a numerically integrated state, from the state y itself into the first row of
   /// guard_values_. Odeint's interpolant reproduces the state there only to round-off, and a guard that starts at
   /// zero — a contact with v_n = 0 about to separate — could come out at +1e-18 and its crossing be missed: the
-  /// contact then stayed in compression while pulled apart (the cloth under a cushion nose below the ball's centre,
-  /// from a random table sweep). Returns whether the row is known.
+  /// contact would then stay in compression while pulled apart (the cloth under a cushion nose below the ball's
+  /// centre). Returns whether the row is known.
   template <class Stepper>
   bool sampleStart(const Stepper& /*stepper*/, const double* y)
   {
