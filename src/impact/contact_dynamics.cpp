@@ -130,15 +130,9 @@ void ContactDynamics::carrierDirections(const double* y, SlipDirections& directi
 void ContactDynamics::forces(const double* y, Eigen::VectorXd& force, SlipDirections& directions,
                              LagScratch& scratch) const
 {
-  forcesFollowing(y, NO_CONTACT, force, directions, scratch);
-}
-
-void ContactDynamics::forcesFollowing(const double* y, std::size_t also_following, Eigen::VectorXd& force,
-                                      SlipDirections& directions, LagScratch& scratch) const
-{
   carrierDirections(y, directions);
-  if (any_quasi_steady_ || also_following != NO_CONTACT)
-    followSlip(y, also_following, force, directions, scratch);
+  if (any_quasi_steady_)
+    followSlip(y, NO_CONTACT, force, directions, scratch);
   forcesAlongDirections(y, directions, force);
 }
 
@@ -236,7 +230,7 @@ void ContactDynamics::addLagRates(const double* y, const Eigen::VectorXd& force,
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
     const double cone_length = contacts_[i].sliding() ? coneLength(i, force) : 0.0;
-    springRates(i, y, scratch.velocity, cone_length, follows(i, also_following), shifted.data() + n + space_.offset[i]);
+    springRates(i, y, scratch.velocity, cone_length, also_following, shifted.data() + n + space_.offset[i]);
   }
   for (Eigen::Index k = 0; k < n; ++k)
   {
@@ -384,7 +378,9 @@ Eigen::Vector2d ContactDynamics::slipDirection(std::size_t contact, const double
 Eigen::Vector2d ContactDynamics::followedSlipDirection(std::size_t contact, const double* y,
                                                        ForceEvaluation& scratch) const
 {
-  forcesFollowing(y, contact, scratch.force, scratch.directions, scratch.lag);
+  // forces() with the contact following too.
+  carrierDirections(y, scratch.directions);
+  followSlip(y, contact, scratch.force, scratch.directions, scratch.lag);
   return scratch.directions[contact];
 }
 
@@ -412,7 +408,7 @@ double ContactDynamics::slidingSpeed(std::size_t contact, const ForceEvaluation&
 }
 
 void ContactDynamics::springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w, double cone_length,
-                                  bool follows_slip, double* rates) const
+                                  std::size_t also_following, double* rates) const
 {
   const ContactState& state = contacts_[contact];
   const int row = space_.offset[contact];
@@ -430,7 +426,7 @@ void ContactDynamics::springRates(std::size_t contact, const double* y, const Ei
     rates[2] = w(row + 2);
     return;
   }
-  if (follows_slip)
+  if (follows(contact, also_following))
     return;  // the direction follows the slip (followSlip); the carrier waits for the release
   // Slip: ṡ_t = v_t − σŝ, whose radial part only keeps |s_t| = μη²|s_n| on the cone. The friction is −μF_nŝ, so
   // only the direction ŝ matters: the state carries it at a fixed length (never through zero, where it would flip)
@@ -458,7 +454,7 @@ double ContactDynamics::rates(const double* y, double* dydt, ForceEvaluation& at
   {
     const ContactState& contact = contacts_[i];
     const double cone_length = contact.sliding() ? coneLength(i, at.force) : 0.0;
-    springRates(i, y, at.velocity, cone_length, contact.followsSlip(), dydt + space_.size + space_.offset[i]);
+    springRates(i, y, at.velocity, cone_length, NO_CONTACT, dydt + space_.size + space_.offset[i]);
     if (contact.slidingInRestitution())
     {
       // ρ = μη²|s_n| shrinks at μη² v_n while the contact separates. v_n is smoothed where it reaches zero (a restart

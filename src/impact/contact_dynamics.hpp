@@ -109,16 +109,13 @@ private:
 
   /// Whether contact i's direction follows its slip in an evaluation that takes `also_following` to follow too.
   bool follows(std::size_t contact, std::size_t also_following) const;
-  /// forces(), with contact `also_following` (or NO_CONTACT) following its slip as well.
-  void forcesFollowing(const double* y, std::size_t also_following, Eigen::VectorXd& force, SlipDirections& directions,
-                       LagScratch& scratch) const;
   /// w = w0 + W I for a contact space of N rows.
   template <int N>
   void addImpulseResponse(const double* y, Eigen::VectorXd& velocity) const;
-  /// Rates of contact i's springs; cone_length is its coneLength() when it slides, `follows_slip` whether its
-  /// direction follows the slip (its carrier then waits).
+  /// Rates of contact i's springs; cone_length is its coneLength() when it slides. The carrier of a direction that
+  /// follows its slip (with `also_following`) waits.
   void springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w, double cone_length,
-                   bool follows_slip, double* rates) const;
+                   std::size_t also_following, double* rates) const;
   /// Spring length of a sliding contact on its friction cone, ρ = μF_n/κ, bounded below (smoothly) where the
   /// spring vanishes.
   double coneLength(std::size_t contact, const Eigen::VectorXd& force) const;

@@ -129,6 +129,9 @@ bool LinearPhaseStepper::build(const ContactSpace& space, const std::vector<Cont
   bool sliding = false;
   if (!slidingDirectionsFixed(space, contacts, dynamics, y0, sliding))
     return false;
+  any_sliding_ = sliding;
+  if (sliding)
+    dynamics.carrierDirections(y0.data(), directions_);
   // With rigid links G = Π E_R (−K), Π = 1 − B W_LL⁺ W_L, and W G = (W Π) E_R (−K) with W Π symmetric (the Schur
   // complement of the links in W) unless friction slides: then symmetry is checked, not assumed.
   const Eigen::Index n = space.size;
@@ -224,7 +227,8 @@ void LinearPhaseStepper::calc_kinematics(double t, OdeState& y, Kinematics& kine
   // barely reached yet (the far end of a chain) have velocities of that order, and the modal sum's round-off then
   // decides their first events differently from the integrator.
   dynamics_->relativeVelocity(y.data(), kinematics.velocity);
-  dynamics_->carrierDirections(y.data(), kinematics.directions);
+  if (any_sliding_)
+    kinematics.directions = directions_;
 }
 
 template <bool Full>

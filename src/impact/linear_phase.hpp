@@ -142,6 +142,8 @@ private:
   Eigen::VectorXd probe_force_;
   SlipDirections probe_directions_;
   LagScratch probe_scratch_;
+  bool any_sliding_ = false;                     ///< some contact slides in the state built
+  SlipDirections directions_;                    ///< their (fixed) slip directions
   mutable Eigen::VectorXd position_, integral_;  ///< modes at the last evaluated instant
   mutable double modes_time_ = 0.0;              ///< that instant (NaN when they hold something else)
 };
