@@ -13,14 +13,15 @@ namespace
 /// direction. Where the spring is shorter — the first and last instants of a contact that slides from its start or
 /// to its end — the direction would turn faster than the dynamics around it, a stiff equation that explicit
 /// integration can only follow in tiny steps; there the friction force is of the same small order, so bounding
-/// the rate changes no result digit (massé strike: identical to 10 digits with 1e-9 and 1e-5). It is joined
-/// smoothly (a hypotenuse, not a maximum) so that the dynamics stays analytic up to and through a separation, where
-/// integrator steps end: a kink there cost hundreds of rejected steps.
+/// the rate leaves the result unchanged far below the solver's tolerance. It is joined smoothly (a hypotenuse, not a
+/// maximum) so that the dynamics stays analytic up to and through a separation, where integrator steps end: a kink
+/// there makes the step control reject step after step.
 constexpr double SLIP_LENGTH_FLOOR = 1e-6;
 
 /// Normal speed (dimensionless: the largest initial contact speed is 1) below which the separation clock no longer
 /// follows v_n down to zero. Any smooth positive clock gives the same solution; this one only sets how much of a
-/// restitution phase runs on the slowed clock. Measured on the massé strike: 0.3 to 1 equally good.
+/// restitution phase runs on the slowed clock, and the cost of a solve varies little with it between 0.3 and 1.
+/// docs/engine.md, "Separation clock".
 constexpr double CLOCK_SPEED_FLOOR = 0.5;
 }  // namespace
 
@@ -41,7 +42,11 @@ void ContactDynamics::refresh()
       rigid_contacts_.push_back(i);
     any_quasi_steady_ = any_quasi_steady_ || contacts_[i].followsSlip();
   }
-  directions_.resize(contacts_.size());
+}
+
+bool ContactDynamics::follows(std::size_t contact, std::size_t also_following) const
+{
+  return contacts_[contact].followsSlip() || contact == also_following;
 }
 
 Eigen::VectorXd ContactDynamics::relativeVelocity(const double* y) const
@@ -55,7 +60,7 @@ void ContactDynamics::relativeVelocity(const double* y, Eigen::VectorXd& velocit
 {
   // The integrator and the guard samples call this thousands of times per solve. On the sizes of one ball's
   // contacts Eigen's dynamic product spends more on set-up than on arithmetic; a fixed-size product is unrolled and
-  // vectorised (a third of the instructions on the cue strike's 6 rows, a fifth on ball–ball–table's 2).
+  // vectorised.
   velocity.resize(space_.size);
   switch (space_.size)
   {
@@ -80,7 +85,7 @@ void ContactDynamics::addImpulseResponse(const double* y, Eigen::VectorXd& veloc
       Eigen::Map<const Eigen::Matrix<double, N, N>>(space_.delassus.data()) * Eigen::Map<const Vector>(y);
 }
 
-void ContactDynamics::springForces(const double* y, Eigen::VectorXd& force) const
+void ContactDynamics::springForces(const double* y, const SlipDirections& directions, Eigen::VectorXd& force) const
 {
   // Every row written once (the contacts' rows tile contact space): this runs at every right-hand side.
   const double* s = y + space_.size;
@@ -99,7 +104,7 @@ void ContactDynamics::springForces(const double* y, Eigen::VectorXd& force) cons
     else if (contact.active() && contact.compliant())
       // Sliding: friction on the cone, −μ F_n ŝ. Equal to −κ s_t on the exact solution, but bounded by the cone
       // even where the spring shrinks to nothing at separation and its integrated length loses accuracy.
-      tangential = -contact.friction * f[row] * directions_[i];
+      tangential = -contact.friction * f[row] * directions[i];
     else
       tangential.setZero();  // inactive, or a sliding rigid link (its friction comes with its force, addLinkForces)
   }
@@ -108,74 +113,87 @@ void ContactDynamics::springForces(const double* y, Eigen::VectorXd& force) cons
 Eigen::VectorXd ContactDynamics::forces(const double* y) const
 {
   Eigen::VectorXd force;
-  forces(y, force);
+  SlipDirections directions;
+  LagScratch scratch;
+  forces(y, force, directions, scratch);
   return force;
 }
 
-void ContactDynamics::useCarrierDirections(const double* y) const
+void ContactDynamics::carrierDirections(const double* y, SlipDirections& directions) const
 {
+  directions.resize(contacts_.size());
   for (std::size_t i = 0; i < contacts_.size(); ++i)
     if (contacts_[i].sliding())
-      directions_[i] = carrierDirection(i, y);
+      directions[i] = carrierDirection(i, y);
 }
 
-void ContactDynamics::forces(const double* y, Eigen::VectorXd& force) const
+void ContactDynamics::forces(const double* y, Eigen::VectorXd& force, SlipDirections& directions,
+                             LagScratch& scratch) const
 {
-  useCarrierDirections(y);
+  carrierDirections(y, directions);
   if (any_quasi_steady_)
-    followSlip(y, force);
-  forcesAlongDirections(y, force);
+    followSlip(y, NO_CONTACT, force, directions, scratch);
+  forcesAlongDirections(y, directions, force);
 }
 
-void ContactDynamics::forcesAlongDirections(const double* y, Eigen::VectorXd& force) const
+void ContactDynamics::evaluate(const double* y, ForceEvaluation& at) const
 {
-  springForces(y, force);
-  if (!rigid_contacts_.empty())
-    addLinkForces(force);
+  relativeVelocity(y, at.velocity);
+  forces(y, at.force, at.directions, at.lag);
 }
 
-void ContactDynamics::followSlip(const double* y, Eigen::VectorXd& force) const
+void ContactDynamics::forcesAlongDirections(const double* y, const SlipDirections& directions,
+                                            Eigen::VectorXd& force) const
+{
+  springForces(y, directions, force);
+  if (!rigid_contacts_.empty())
+    addLinkForces(directions, force);
+}
+
+void ContactDynamics::followSlip(const double* y, std::size_t also_following, Eigen::VectorXd& force,
+                                 SlipDirections& directions, LagScratch& scratch) const
 {
   // The lag that keeps ρθ̇ = |v_t| sin(ψ − θ), θ the slip direction's angle and ψ the slip velocity's, on the slow
   // manifold: sin δ = ε(ψ̇ − δ̇) with δ = ψ − θ and ε = ρ/|v_t|, expanded in ε. First order (δ̇ = 0) leaves errors
-  // of order ε³ in the friction, second order of order ε⁴.
-  relativeVelocity(y, follow_velocity_);
-  firstOrderLags(y, follow_velocity_, force, lags_);
-  addLagRates(y, force);
+  // of order ε³ in the friction, second order of order ε⁴ (docs/engine.md, "Quasi-steady slip").
+  relativeVelocity(y, scratch.velocity);
+  firstOrderLags(y, scratch.velocity, also_following, force, directions, scratch.lags);
+  addLagRates(y, force, also_following, scratch);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
     // Only a sliding contact has tangential rows: a frictionless one last in contact space has none to read.
-    if (!contacts_[i].followsSlip())
+    if (!follows(i, also_following))
       continue;
-    const Eigen::Vector2d v_t = follow_velocity_.segment<2>(space_.offset[i] + 1);
+    const Eigen::Vector2d v_t = scratch.velocity.segment<2>(space_.offset[i] + 1);
     const double speed = v_t.norm();
     if (speed == 0.0)
-      continue;
-    const double sin_lag = std::sin(lags_[i].angle), cos_lag = std::cos(lags_[i].angle);
+      continue;  // its direction stays its carrier's
+    const double sin_lag = std::sin(scratch.lags[i].angle), cos_lag = std::cos(scratch.lags[i].angle);
     const Eigen::Vector2d along = v_t / speed;
-    directions_[i] =
+    directions[i] =
         Eigen::Vector2d(cos_lag * along.x() + sin_lag * along.y(), cos_lag * along.y() - sin_lag * along.x());
   }
-  forcesAlongDirections(y, force);
+  forcesAlongDirections(y, directions, force);
 }
 
-void ContactDynamics::firstOrderLags(const double* y, const Eigen::VectorXd& w, Eigen::VectorXd& force,
+void ContactDynamics::firstOrderLags(const double* y, const Eigen::VectorXd& w, std::size_t also_following,
+                                     Eigen::VectorXd& force, SlipDirections& directions,
                                      std::vector<SlipLag>& lags) const
 {
   // Zeroth order: along the slip. Then the lag under the forces of that guess.
   lags.assign(contacts_.size(), SlipLag{});
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
-    if (!contacts_[i].followsSlip())
+    if (!follows(i, also_following))
       continue;
     const Eigen::Vector2d v_t = w.segment<2>(space_.offset[i] + 1);
     if (v_t.norm() > 0.0)
-      directions_[i] = v_t.normalized();
+      directions[i] = v_t.normalized();
   }
-  forcesAlongDirections(y, force);
+  forcesAlongDirections(y, directions, force);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
-    if (!contacts_[i].followsSlip())
+    if (!follows(i, also_following))
       continue;
     const int row = space_.offset[i];
     const Eigen::Vector2d v_t = w.segment<2>(row + 1);
@@ -185,47 +203,50 @@ void ContactDynamics::firstOrderLags(const double* y, const Eigen::VectorXd& w, 
     const Eigen::Vector2d a_t(space_.delassus.row(row + 1).dot(force), space_.delassus.row(row + 2).dot(force));
     const double turn_rate = (v_t.x() * a_t.y() - v_t.y() * a_t.x()) / (speed * speed);
     // The true spring length, not the floored one of the integrated slip (coneLength): here it only sets the lag,
-    // no stiffness to bound. With the floor, 1e-6 against a true 3e-10, a slow turning slip (3e-5, a rolling ball's
-    // cloth contact under a cushion hit) lagged by 90°, and stuck and slipped again 53 000 times.
+    // no stiffness to bound. The floor can be orders of magnitude above a lightly loaded cone (a rolling ball's cloth
+    // contact under a cushion hit), and a slowly turning slip would then lag by up to 90° and stick and slip again
+    // without end.
     lags[i].relaxation = contacts_[i].coneLength(force(row)) / speed;
     lags[i].angle = std::asin(std::clamp(lags[i].relaxation * turn_rate, -1.0, 1.0));
   }
 }
 
-void ContactDynamics::addLagRates(const double* y, const Eigen::VectorXd& force) const
+void ContactDynamics::addLagRates(const double* y, const Eigen::VectorXd& force, std::size_t also_following,
+                                  LagScratch& scratch) const
 {
   // δ̇ of the first-order lag along the motion, by a forward difference over a hundredth of the relaxation time:
   // short against the time on which the lag changes (its truncation error is then 1e-2 of the correction's own
   // second-order term), long enough that the lags' round-off leaves 1e-14 of the lag in the correction εδ̇.
   constexpr double DIFFERENCE_STEP = 1e-2;
   double step = 0.0;
-  for (const SlipLag& lag : lags_)
+  for (const SlipLag& lag : scratch.lags)
     step += DIFFERENCE_STEP * lag.relaxation;  // a sum, not a maximum: smooth in the state
   if (!(step > 0.0))
     return;
   // The state moved by step × its rate: İ = F, and the spring rates (written in place of the springs first).
   const Eigen::Index n = space_.size;
-  shifted_state_.assign(y, y + 2 * n);
+  OdeState& shifted = scratch.shifted_state;
+  shifted.assign(y, y + 2 * n);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
     const double cone_length = contacts_[i].sliding() ? coneLength(i, force) : 0.0;
-    springRates(i, y, follow_velocity_, cone_length, shifted_state_.data() + n + space_.offset[i]);
+    springRates(i, y, scratch.velocity, cone_length, also_following, shifted.data() + n + space_.offset[i]);
   }
   for (Eigen::Index k = 0; k < n; ++k)
   {
-    shifted_state_[k] += step * force(k);
-    shifted_state_[n + k] = y[n + k] + step * shifted_state_[n + k];
+    shifted[k] += step * force(k);
+    shifted[n + k] = y[n + k] + step * shifted[n + k];
   }
-  relativeVelocity(shifted_state_.data(), shifted_velocity_);
-  useCarrierDirections(shifted_state_.data());
-  firstOrderLags(shifted_state_.data(), shifted_velocity_, shifted_force_, shifted_lags_);
-  useCarrierDirections(y);  // followSlip then sets the followed contacts' own
+  relativeVelocity(shifted.data(), scratch.shifted_velocity);
+  carrierDirections(shifted.data(), scratch.shifted_directions);
+  firstOrderLags(shifted.data(), scratch.shifted_velocity, also_following, scratch.shifted_force,
+                 scratch.shifted_directions, scratch.shifted_lags);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
-    SlipLag& lag = lags_[i];
+    SlipLag& lag = scratch.lags[i];
     if (lag.relaxation == 0.0)
       continue;
-    const double lag_rate = (shifted_lags_[i].angle - lag.angle) / step;
+    const double lag_rate = (scratch.shifted_lags[i].angle - lag.angle) / step;
     lag.angle = std::asin(std::clamp(std::sin(lag.angle) - lag.relaxation * lag_rate, -1.0, 1.0));
   }
 }
@@ -238,7 +259,7 @@ double ContactDynamics::relaxationRatio(std::size_t contact, const Eigen::Vector
   return contacts_[contact].coneLength(force(row)) / (quasi_steady_relaxation_ * speed);
 }
 
-Eigen::MatrixXd ContactDynamics::linkBasis() const
+Eigen::MatrixXd ContactDynamics::linkBasis(const SlipDirections& directions) const
 {
   // Rigid links: unknown normal forces f keep their normal velocities constant (zero), (W F)_n = 0. A sliding
   // link's friction, −μ f ŝ, depends on its own unknown, so each link contributes a column B_r of F = F_s + B f.
@@ -250,7 +271,7 @@ Eigen::MatrixXd ContactDynamics::linkBasis() const
     const int row = space_.offset[i];
     basis(row, r) = 1.0;
     if (contacts_[i].slipping)
-      basis.block<2, 1>(row + 1, r) = -contacts_[i].friction * directions_[i];
+      basis.block<2, 1>(row + 1, r) = -contacts_[i].friction * directions[i];
   }
   return basis;
 }
@@ -263,9 +284,9 @@ Eigen::MatrixXd ContactDynamics::linkRows() const
   return normal_rows;
 }
 
-void ContactDynamics::addLinkForces(Eigen::VectorXd& force) const
+void ContactDynamics::addLinkForces(const SlipDirections& directions, Eigen::VectorXd& force) const
 {
-  const Eigen::MatrixXd basis = linkBasis(), normal_rows = linkRows();
+  const Eigen::MatrixXd basis = linkBasis(directions), normal_rows = linkRows();
   // Redundant links (a singular system) get the least-norm forces.
   const Eigen::VectorXd link_forces =
       (normal_rows * basis).completeOrthogonalDecomposition().solve(-(normal_rows * force));
@@ -287,8 +308,11 @@ Eigen::Vector2d ContactDynamics::acrossSlip(std::size_t contact, const Eigen::Ve
   return v_t - direction * direction.dot(v_t);
 }
 
-double ContactDynamics::linkForceRate(std::size_t contact, const Eigen::VectorXd& w, const Eigen::VectorXd& force) const
+double ContactDynamics::linkForceRate(std::size_t contact, const ForceEvaluation& at) const
 {
+  const Eigen::VectorXd& w = at.velocity;
+  const Eigen::VectorXd& force = at.force;
+  const SlipDirections& directions = at.directions;
   // Differentiating (W F)_L = 0 with F = F_s + B f: (W_L B) ḟ = −W_L (Ḟ_s + Ḃ f). The springs move with the contact
   // velocities (ṡ_n = v_n, a sticking ṡ_t = v_t), a compliant sliding contact's friction −μF_nŝ and a sliding
   // link's column −μŝ with their directions.
@@ -307,20 +331,20 @@ double ContactDynamics::linkForceRate(std::size_t contact, const Eigen::VectorXd
       rate.segment<2>(row + 1) = -state.kappa * w.segment<2>(row + 1);
     else if (state.compliant())
       rate.segment<2>(row + 1) =
-          -state.friction * (rate(row) * directions_[i] + force(row) * directionRate(i, directions_[i], w, force));
+          -state.friction * (rate(row) * directions[i] + force(row) * directionRate(i, directions[i], w, force));
     else
-      rate.segment<2>(row + 1) = -state.friction * force(row) * directionRate(i, directions_[i], w, force);
+      rate.segment<2>(row + 1) = -state.friction * force(row) * directionRate(i, directions[i], w, force);
   }
   const Eigen::MatrixXd normal_rows = linkRows();
   const Eigen::VectorXd rates =
-      (normal_rows * linkBasis()).completeOrthogonalDecomposition().solve(-(normal_rows * rate));
+      (normal_rows * linkBasis(directions)).completeOrthogonalDecomposition().solve(-(normal_rows * rate));
   for (Eigen::Index r = 0; r < rates.size(); ++r)
     if (rigid_contacts_[r] == contact)
       return rates(r);
   return 0.0;
 }
 
-double ContactDynamics::strainEnergy(std::size_t contact, const double* y) const
+double ContactDynamics::strainEnergy(std::size_t contact, const double* y, ForceEvaluation& scratch) const
 {
   const ContactState& state = contacts_[contact];
   const double* s = y + space_.size + space_.offset[contact];
@@ -334,22 +358,30 @@ double ContactDynamics::strainEnergy(std::size_t contact, const double* y) const
   double normal_force = -state.stiffness * s[0];
   if (!state.compliant())
   {
-    forces(y, follow_force_);
-    normal_force = follow_force_(space_.offset[contact]);
+    forces(y, scratch.force, scratch.directions, scratch.lag);
+    normal_force = scratch.force(space_.offset[contact]);
   }
   // A link that pulls is released at the instant it is made, and has no cone meanwhile (squared, its force would
-  // read as strain energy, up to 1 % of a random strike's).
+  // read as strain energy that no spring holds).
   const double cone = state.coneLength(std::max(normal_force, 0.0));
   return normal + 0.5 * state.kappa * cone * cone;
 }
 
-Eigen::Vector2d ContactDynamics::springDirection(std::size_t contact, const double* y) const
+Eigen::Vector2d ContactDynamics::slipDirection(std::size_t contact, const double* y, ForceEvaluation& scratch) const
 {
-  const ContactState& state = contacts_[contact];
-  if (!state.followsSlip())
+  if (!contacts_[contact].followsSlip())
     return carrierDirection(contact, y);
-  forces(y, follow_force_);
-  return directions_[contact];
+  forces(y, scratch.force, scratch.directions, scratch.lag);
+  return scratch.directions[contact];
+}
+
+Eigen::Vector2d ContactDynamics::followedSlipDirection(std::size_t contact, const double* y,
+                                                       ForceEvaluation& scratch) const
+{
+  // forces() with the contact following too.
+  carrierDirections(y, scratch.directions);
+  followSlip(y, contact, scratch.force, scratch.directions, scratch.lag);
+  return scratch.directions[contact];
 }
 
 Eigen::Vector2d ContactDynamics::carrierDirection(std::size_t contact, const double* y) const
@@ -362,22 +394,21 @@ Eigen::Vector2d ContactDynamics::carrierDirection(std::size_t contact, const dou
   return length > relaxed ? Eigen::Vector2d(tangential / length) : contacts_[contact].slip_direction;
 }
 
-double ContactDynamics::slidingSpeed(std::size_t contact, const double* y, const Eigen::VectorXd& w,
-                                     const Eigen::VectorXd& force) const
+double ContactDynamics::slidingSpeed(std::size_t contact, const ForceEvaluation& at) const
 {
   const ContactState& state = contacts_[contact];
   const int row = space_.offset[contact];
-  const double along = springDirection(contact, y).dot(w.segment<2>(row + 1));
+  const double along = at.directions[contact].dot(at.velocity.segment<2>(row + 1));
   if (state.phase != NormalPhase::RigidLink)
-    return along + state.coneRate(w(row));
+    return along + state.coneRate(at.velocity(row));
   // A rigid link has v_n = 0, but its spring on the friction cone, ρ = μf/κ, still grows and shrinks with its
   // force: σ = ŝ·v_t − ρ̇, the limit of the compliant contact's μη²v_n = −μḞ_n/κ. Without ρ̇ the link would slide
   // on while the cone outgrows the slip, and stick again with spring energy that nothing paid for.
-  return along - state.friction * linkForceRate(contact, w, force) / state.kappa;
+  return along - state.friction * linkForceRate(contact, at) / state.kappa;
 }
 
 void ContactDynamics::springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w, double cone_length,
-                                  double* rates) const
+                                  std::size_t also_following, double* rates) const
 {
   const ContactState& state = contacts_[contact];
   const int row = space_.offset[contact];
@@ -388,17 +419,18 @@ void ContactDynamics::springRates(std::size_t contact, const double* y, const Ei
   rates[1] = rates[2] = 0.0;
   if (!state.active())
     return;
+  // docs/impact_model.md, "Coulomb friction and tangential compliance".
   if (!state.slipping)
   {
-    rates[1] = w(row + 1);  // stick: the contact particle is at rest on B (spec §2.6)
+    rates[1] = w(row + 1);  // stick: the contact particle is at rest on B
     rates[2] = w(row + 2);
     return;
   }
-  if (state.followsSlip())
+  if (follows(contact, also_following))
     return;  // the direction follows the slip (followSlip); the carrier waits for the release
-  // Slip: ṡ_t = v_t − σŝ (spec §2.6), whose radial part only keeps |s_t| = μη²|s_n| on the cone. The friction is
-  // −μF_nŝ, so only the direction ŝ matters: the state carries it at a fixed length (never through zero, where it
-  // would flip) and turns it at the physical rate, directionRate's, scaled by the carrier's length.
+  // Slip: ṡ_t = v_t − σŝ, whose radial part only keeps |s_t| = μη²|s_n| on the cone. The friction is −μF_nŝ, so
+  // only the direction ŝ matters: the state carries it at a fixed length (never through zero, where it would flip)
+  // and turns it at the physical rate, directionRate's, scaled by the carrier's length.
   const double* s = y + space_.size + row;
   const Eigen::Vector2d carrier(s[1], s[2]);
   const double length = carrier.norm();
@@ -413,22 +445,21 @@ double ContactDynamics::coneLength(std::size_t contact, const Eigen::VectorXd& f
   return std::sqrt(rho * rho + SLIP_LENGTH_FLOOR * SLIP_LENGTH_FLOOR);  // ρ is of order one: no overflow to guard
 }
 
-double ContactDynamics::rates(const double* y, double* dydt) const
+double ContactDynamics::rates(const double* y, double* dydt, ForceEvaluation& at) const
 {
-  relativeVelocity(y, velocity_scratch_);
-  forces(y, force_scratch_);
-  std::copy_n(force_scratch_.data(), space_.size, dydt);
+  evaluate(y, at);
+  std::copy_n(at.force.data(), space_.size, dydt);
   double shrink_rate = 0.0;
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
     const ContactState& contact = contacts_[i];
-    const double cone_length = contact.sliding() ? coneLength(i, force_scratch_) : 0.0;
-    springRates(i, y, velocity_scratch_, cone_length, dydt + space_.size + space_.offset[i]);
+    const double cone_length = contact.sliding() ? coneLength(i, at.force) : 0.0;
+    springRates(i, y, at.velocity, cone_length, NO_CONTACT, dydt + space_.size + space_.offset[i]);
     if (contact.slidingInRestitution())
     {
       // ρ = μη²|s_n| shrinks at μη² v_n while the contact separates. v_n is smoothed where it reaches zero (a restart
       // of compression) so that the clock stays smooth across that event too.
-      const double v_n = velocity_scratch_(space_.offset[i]);
+      const double v_n = at.velocity(space_.offset[i]);
       const double separation_speed = std::sqrt(v_n * v_n + CLOCK_SPEED_FLOOR * CLOCK_SPEED_FLOOR);
       shrink_rate += contact.coneRate(separation_speed) / cone_length;
     }

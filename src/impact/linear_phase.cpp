@@ -47,7 +47,7 @@ constexpr double ROUND_OFF = 1e-12;
 bool directionFixed(std::size_t i, const ContactSpace& space, const ContactDynamics& dynamics, const OdeState& y0,
                     const Eigen::VectorXd& velocity, const Eigen::MatrixXd& delassus_times_g)
 {
-  const Eigen::Vector2d direction = dynamics.springDirection(i, y0.data());
+  const Eigen::Vector2d direction = dynamics.carrierDirection(i, y0.data());
   const Eigen::Vector2d across(-direction.y(), direction.x());
   const int row = space.offset[i];
   const double velocity_across = across.dot(velocity.segment<2>(row + 1));
@@ -94,7 +94,7 @@ void LinearPhaseStepper::readForceMap(const ContactSpace& space, const std::vect
   for (Eigen::Index a = 0; a < r; ++a)
   {
     probe_[static_cast<std::size_t>(n + moving_rows_[a])] = 1.0;
-    dynamics.forces(probe_.data(), probe_force_);
+    dynamics.forces(probe_.data(), probe_force_, probe_directions_, probe_scratch_);
     force_from_s_.col(a) = probe_force_;
     probe_[static_cast<std::size_t>(n + moving_rows_[a])] = 0.0;
   }
@@ -129,6 +129,9 @@ bool LinearPhaseStepper::build(const ContactSpace& space, const std::vector<Cont
   bool sliding = false;
   if (!slidingDirectionsFixed(space, contacts, dynamics, y0, sliding))
     return false;
+  any_sliding_ = sliding;
+  if (sliding)
+    dynamics.carrierDirections(y0.data(), directions_);
   // With rigid links G = Π E_R (−K), Π = 1 − B W_LL⁺ W_L, and W G = (W Π) E_R (−K) with W Π symmetric (the Schur
   // complement of the links in W) unless friction slides: then symmetry is checked, not assumed.
   const Eigen::Index n = space.size;
@@ -224,6 +227,8 @@ void LinearPhaseStepper::calc_kinematics(double t, OdeState& y, Kinematics& kine
   // barely reached yet (the far end of a chain) have velocities of that order, and the modal sum's round-off then
   // decides their first events differently from the integrator.
   dynamics_->relativeVelocity(y.data(), kinematics.velocity);
+  if (any_sliding_)
+    kinematics.directions = directions_;
 }
 
 template <bool Full>

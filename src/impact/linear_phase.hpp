@@ -32,7 +32,8 @@ class LinearPhaseStepper
 public:
   /// Builds the closed form of the state from y0 at t0; false when the state's dynamics is not linear (a sliding
   /// direction would turn) or not symmetric. Steps span `radians_per_step` of the fastest mode's phase.
-  /// `dynamics` must describe the same discrete state as `contacts` (refreshed after the last transition).
+  /// `dynamics` must describe the same discrete state as `contacts` (refreshed after the last transition), in which
+  /// no slip direction follows its slip (ContactState::quasi_steady): the closed form holds the directions fixed.
   bool build(const ContactSpace& space, const std::vector<ContactState>& contacts, const ContactDynamics& dynamics,
              const OdeState& y0, double t0, double radians_per_step);
 
@@ -78,8 +79,9 @@ public:
   void affineGuardDerivatives(const AffineGuard& guard, double t, double* derivatives) const;
   /// Length of a step (a fixed fraction of the fastest period).
   double step() const { return step_; }
-  /// The state at t with its kinematics, the forces read off the modes: what calc_state followed by
-  /// evaluateKinematics gives, without the force law (guards are sampled, and their roots found, with it).
+  /// The state at t with its kinematics, the forces read off the modes and the slip directions off their (fixed)
+  /// carriers: what calc_state followed by evaluateKinematics gives, without the force law (guards are sampled, and
+  /// their roots found, with it).
   void calc_kinematics(double t, OdeState& y, Kinematics& kinematics) const;
 
 private:
@@ -138,6 +140,10 @@ private:
   Eigen::MatrixXd eigenvectors_;  ///< Q
   OdeState probe_;
   Eigen::VectorXd probe_force_;
+  SlipDirections probe_directions_;
+  LagScratch probe_scratch_;
+  bool any_sliding_ = false;                     ///< some contact slides in the state built
+  SlipDirections directions_;                    ///< their (fixed) slip directions
   mutable Eigen::VectorXd position_, integral_;  ///< modes at the last evaluated instant
   mutable double modes_time_ = 0.0;              ///< that instant (NaN when they hold something else)
 };

@@ -27,7 +27,7 @@ class SeparationClockStepper
 {
 public:
   SeparationClockStepper(const ContactDynamics& dynamics, double absolute_tolerance, double relative_tolerance)
-      : system_{dynamics}, stepper_(absolute_tolerance, relative_tolerance)
+      : system_{SpringSystem(dynamics)}, stepper_(absolute_tolerance, relative_tolerance)
   {
   }
 
@@ -42,7 +42,7 @@ public:
   template <class System>
   std::pair<double, double> do_step(System&& /*dynamics: the clocked system is used instead*/)
   {
-    return stepper_.do_step(std::cref(system_));
+    return stepper_.do_step(std::ref(system_));
   }
 
   void calc_state(double u, OdeState& y) const
@@ -61,10 +61,10 @@ private:
   /// d[y, t]/du = g [f(y), 1].
   struct ClockedSystem
   {
-    const ContactDynamics& dynamics;
-    void operator()(const OdeState& x, OdeState& dxdu, double /*u*/) const
+    SpringSystem springs;
+    void operator()(const OdeState& x, OdeState& dxdu, double /*u*/)
     {
-      const double g = 1.0 / (1.0 + dynamics.rates(x.data(), dxdu.data()));
+      const double g = 1.0 / (1.0 + springs.rates(x.data(), dxdu.data()));
       for (std::size_t k = 0; k + 1 < x.size(); ++k)
         dxdu[k] *= g;
       dxdu.back() = g;

@@ -224,8 +224,7 @@ double velocityRoundOff(const ContactSpace& space, const double* impulses, int r
 void evaluateKinematics(const ContactDynamics& dynamics, const double* y, Kinematics& kinematics)
 {
   kinematics.y = y;
-  dynamics.relativeVelocity(y, kinematics.velocity);
-  dynamics.forces(y, kinematics.force);
+  dynamics.evaluate(y, kinematics);
 }
 
 const std::vector<Guard>& armedGuards(const std::vector<ContactState>& contacts, const ContactSpace& space,
@@ -301,7 +300,7 @@ double guardValue(const Guard& guard, const Kinematics& kinematics, const std::v
   if (guard.type == ContactEventType::StickToSlip)
     return std::hypot(kinematics.force(row + 1), kinematics.force(row + 2)) - contact.friction * kinematics.force(row);
   if (guard.type == ContactEventType::SlipToStick)
-    return -dynamics.slidingSpeed(guard.contact, kinematics.y, kinematics.velocity, kinematics.force);
+    return -dynamics.slidingSpeed(guard.contact, kinematics);
   return -1.0;  // a rigid link is made by an end of compression, never by a guard of its own
 }
 
@@ -445,7 +444,7 @@ std::optional<Guard> jammedLink(ContactDynamics& dynamics, const Kinematics& kin
     if (settled[i] || contact.phase != NormalPhase::RigidLink || !contact.slipping)
       continue;
     const int row = space.offset[i];
-    bool jams = dynamics.slidingSpeed(i, kinematics.y, kinematics.velocity, kinematics.force) < -VELOCITY_TOLERANCE;
+    bool jams = dynamics.slidingSpeed(i, kinematics) < -VELOCITY_TOLERANCE;
     if (!jams && kinematics.force(row) <= FORCE_TOLERANCE)
     {
       // Released, would it approach? Its grazing acceleration with the contact inactive (as a released one is
@@ -526,7 +525,8 @@ void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vecto
 {
   const Eigen::VectorXd w = dynamics.relativeVelocity(y.data());
   OdeState rates(y.size());
-  dynamics(y, rates, 0.0);
+  SpringSystem springs(dynamics);
+  springs(y, rates, 0.0);
   // J = d²w/dt² = W dF/dt, with dF/dt = −k ṡ_n, −κ ṡ_t for every spring.
   Eigen::VectorXd force_rate = Eigen::VectorXd::Zero(space.size);
   for (std::size_t i = 0; i < contacts.size(); ++i)

@@ -51,15 +51,13 @@ std::optional<AffineGuard> affineForm(const Guard& guard, const std::vector<Cont
 /// the new one's, up to round-off on either side. Both crossing searches take such a start for zero.
 constexpr double START_ROUND_OFF = 1e-12;
 
-/// Values that every guard evaluation at one instant shares.
-struct Kinematics
+/// Values that every guard evaluation at one instant shares: the velocities, forces and slip directions at y.
+struct Kinematics : ForceEvaluation
 {
-  const double* y;
-  Eigen::VectorXd velocity;  ///< relative contact velocity w
-  Eigen::VectorXd force;     ///< contact forces F
+  const double* y = nullptr;
 };
 
-/// Relative velocity and forces at y, into an existing Kinematics (its vectors reused).
+/// Relative velocity, forces and slip directions at y, into an existing Kinematics (its vectors reused).
 void evaluateKinematics(const ContactDynamics& dynamics, const double* y, Kinematics& kinematics);
 
 /// Guards armed by the current discrete state, into `guards` (returned).
