@@ -7,7 +7,7 @@
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "billiard_shot_planner/motion/ball_trajectory.hpp"
 #include "billiard_shot_planner/motion/table.hpp"
-#include "billiard_shot_planner/scenarios/sphere_kinematics.hpp"
+#include "billiard_shot_planner/scenarios/ball_collision.hpp"
 
 namespace billiard_shot_planner
 {
@@ -43,9 +43,9 @@ struct TableTrajectory
 /// The cloth's own law is the table's.
 struct BallContactSettings
 {
-  SurfaceContact ball_ball{0.95, 0.06, 1.2};  ///< e, μ (when not speed-dependent), η²
-  bool speed_dependent_friction = true;       ///< μ(v) = a + b·exp(−c·v) of Alciatore's TP A-14
-  double stiffness_ratio = 0.01;              ///< k_cloth / k_ball_ball
+  SurfaceContact ball_ball = BallCollision{}.ball_ball;  ///< e, μ (of the constant model), η²
+  BallBallFriction friction_model = BallCollision{}.friction_model;
+  double stiffness_ratio = BallCollision{}.stiffness_ratio;  ///< k_cloth / k_ball_ball
 };
 
 /// Simulates every ball on the table from its start until every ball rests or has left the table (or a ball meets
