@@ -15,6 +15,7 @@ using Solver = Expected<json> (*)(const json&, const SolverOptions&);
 
 const std::pair<const char*, Solver> PROBLEMS[] = {
     {"ball_ball_table", json_io::solveBallBallTable}, {"chain", json_io::solveChain},
+    {"ball_ball", json_io::solveBallBall},
     {"cue_strike", json_io::solveCueStrike},          {"ball_table", json_io::solveBallTable},
     {"ball_motion", json_io::solveBallMotion},        {"shot", json_io::solveShot},
 };
