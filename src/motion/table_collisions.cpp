@@ -1,8 +1,6 @@
 #include "table_collisions.hpp"
 
-#include <string>
-
-#include "phase_dynamics.hpp"
+#include <algorithm>
 
 namespace billiard_shot_planner
 {
@@ -10,9 +8,6 @@ namespace detail
 {
 namespace
 {
-/// Height (m) above the cloth within which a ball's centre counts as on it: the round-off of a landing's position.
-constexpr double ON_CLOTH_TOLERANCE = 1e-9;
-
 BallCollision collisionOf(const std::vector<BallState>& touching, const Ball& ball, const Table& table,
                           const BallContactSettings& contact)
 {
@@ -24,7 +19,8 @@ BallCollision collisionOf(const std::vector<BallState>& touching, const Ball& ba
   collision.cloth = table.cloth;
   collision.stiffness_ratio = contact.stiffness_ratio;
   for (const BallState& state : touching)
-    collision.balls.push_back({state.position.head<2>(), state.velocity, state.angular_velocity});
+    collision.balls.push_back({state.position.head<2>(), state.velocity, state.angular_velocity,
+                               std::max(state.position.z() - ball.radius, 0.0)});
   return collision;
 }
 }  // namespace
@@ -33,10 +29,6 @@ Expected<std::vector<BallState>> resolveBallImpact(const std::vector<BallState>&
                                                    const Table& table, const BallContactSettings& contact,
                                                    const SolverOptions& options)
 {
-  for (std::size_t i = 0; i < touching.size(); ++i)
-    if (touching[i].position.z() > ball.radius + ON_CLOTH_TOLERANCE)
-      return Error{ErrorCode::InvalidShot, "balls",
-                   "a ball in the air meets another ball: impacts of balls off the cloth are not modelled"};
   auto solved = solve(collisionOf(touching, ball, table, contact), options);
   if (!solved && solved.error().code == ErrorCode::NoApproachingContact)
     return touching;  // a graze within the touching tolerance: nothing presses, nothing changes

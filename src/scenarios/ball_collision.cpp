@@ -21,7 +21,12 @@ std::string ballName(std::size_t i)
 
 Eigen::Vector3d centre(const BallCollision& c, std::size_t i)
 {
-  return {c.balls[i].position.x(), c.balls[i].position.y(), c.ball_radius};
+  return {c.balls[i].position.x(), c.balls[i].position.y(), c.ball_radius + c.balls[i].height};
+}
+
+bool onCloth(const BallCollision& c, std::size_t i)
+{
+  return c.balls[i].height <= c.touching_tolerance;
 }
 
 Eigen::Matrix<double, 6, 1> ballVelocity(const CollidingBall& ball)
@@ -35,7 +40,8 @@ Status checkBall(const CollidingBall& ball, std::size_t i, double radius)
                      requireFinite(ball.velocity, ballField(i, "velocity")),
                      requireFinite(ball.angular_velocity, ballField(i, "angular_velocity")),
                      requirePlausibleSpeed(ball.velocity.norm(), ballField(i, "velocity")),
-                     requirePlausibleSpeed(ball.angular_velocity.norm() * radius, ballField(i, "angular_velocity"))});
+                     requirePlausibleSpeed(ball.angular_velocity.norm() * radius, ballField(i, "angular_velocity")),
+                     requireNonNegative(ball.height, ballField(i, "height"))});
 }
 
 Status checkOverlaps(const BallCollision& c)
@@ -44,7 +50,7 @@ Status checkOverlaps(const BallCollision& c)
   for (std::size_t a = 1; a < c.balls.size(); ++a)
     for (std::size_t b = 0; b < a; ++b)
     {
-      const double distance = (c.balls[a].position - c.balls[b].position).norm();
+      const double distance = (centre(c, a) - centre(c, b)).norm();
       if (distance < closest)
         return invalidArgument(ballField(a, "position"),
                                "overlaps balls[" + std::to_string(b) + "]: the centres are " + formatNumber(distance) +
@@ -136,7 +142,8 @@ Expected<Configuration> configure(const BallCollision& c)
   for (const TouchingPair& pair : configuration.pairs)
     problem.contacts.push_back(pairContact(c, pair, coordinates));
   for (std::size_t i = 0; i < c.balls.size(); ++i)
-    problem.contacts.push_back(clothContact(c, i, coordinates));
+    if (onCloth(c, i))
+      problem.contacts.push_back(clothContact(c, i, coordinates));
   if (!anyContactApproaches(problem))
     return Error{ErrorCode::NoApproachingContact, "balls",
                  "no touching pair approaches and no ball moves into the cloth: there is no collision"};
@@ -170,7 +177,7 @@ std::vector<TouchingPair> touchingPairs(const BallCollision& c)
   std::vector<TouchingPair> pairs;
   for (std::size_t a = 1; a < c.balls.size(); ++a)
     for (std::size_t b = 0; b < a; ++b)
-      if ((c.balls[a].position - c.balls[b].position).norm() <= farthest)
+      if ((centre(c, a) - centre(c, b)).norm() <= farthest)
       {
         TouchingPair pair{b, a, 0.0};
         pair.friction = pairFriction(c, pair);
@@ -200,6 +207,10 @@ Expected<BallCollisionResult> solve(const BallCollision& collision, const Solver
   result.pairs = configuration.value().pairs;
   for (const Contact& contact : configuration.value().problem.contacts)
     result.contact_names.push_back(contact.name);
+  std::size_t next_cloth_contact = result.pairs.size();
+  for (std::size_t i = 0; i < collision.balls.size(); ++i)
+    result.cloth_contacts.push_back(onCloth(collision, i) ? next_cloth_contact++
+                                                          : BallCollisionResult::NO_CLOTH_CONTACT);
   for (std::size_t i = 0; i < collision.balls.size(); ++i)
   {
     const auto at = static_cast<Eigen::Index>(6 * i);

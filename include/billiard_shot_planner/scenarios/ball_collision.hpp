@@ -13,12 +13,15 @@
 
 namespace billiard_shot_planner
 {
-/// A ball on the cloth (its centre at height R) as it enters a collision.
+/// A ball as it enters a collision: on the cloth (its centre at height R), or above it (a hop) at `height`.
 struct CollidingBall
 {
-  Eigen::Vector2d position = Eigen::Vector2d::Zero();  ///< centre on the cloth, m
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  ///< centre in the cloth's plane, m
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();
+  /// m, ≥ 0: the centre's height above R. A ball higher than the touching tolerance is in the air: it has no cloth
+  /// contact in the impact.
+  double height = 0.0;
 };
 
 /// How the ball–ball friction coefficient of each touching pair is chosen.
@@ -83,12 +86,15 @@ struct CollidedBall
 struct BallCollisionResult
 {
   std::vector<CollidedBall> balls;  ///< right after the impact
-  /// Contacts 0 … pairs.size() − 1 join the pairs, contact pairs.size() + i is ball i on the cloth.
+  /// Contacts 0 … pairs.size() − 1 join the pairs; the cloth contacts of the balls on the cloth follow.
   std::vector<TouchingPair> pairs;
   std::vector<std::string> contact_names;  ///< "ball0-ball1", "ball1-cloth"
   ImpactResult impact;
+  /// The contact of each ball on the cloth; NO_CLOTH_CONTACT for a ball in the air.
+  std::vector<std::size_t> cloth_contacts;
+  static constexpr std::size_t NO_CLOTH_CONTACT = static_cast<std::size_t>(-1);
 
-  std::size_t clothContact(std::size_t ball) const { return pairs.size() + ball; }
+  std::size_t clothContact(std::size_t ball) const { return cloth_contacts[ball]; }
 };
 
 /// Checks the fields (the error names one: "balls[3].position", "ball_ball.eta2"), refusing fewer than two balls
@@ -98,7 +104,8 @@ Status validate(const BallCollision& collision);
 /// The touching pairs with their friction coefficients, in the order of their contacts.
 std::vector<TouchingPair> touchingPairs(const BallCollision& collision);
 
-/// The engine's configuration: 6 coordinates (v, ω) per ball, the pairs' contacts, then the cloth contacts.
+/// The engine's configuration: 6 coordinates (v, ω) per ball, the pairs' contacts, then the cloth contacts of the
+/// balls on the cloth.
 /// Fails with NoApproachingContact (field "balls") when no two balls touch, or when nothing approaches.
 Expected<ImpactProblem> makeImpactProblem(const BallCollision& collision);
 
