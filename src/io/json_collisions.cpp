@@ -1,9 +1,11 @@
+#include <cstring>
 #include <string>
 #include <tuple>
 
 #include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
 #include "billiard_shot_planner/scenarios/ball_chain.hpp"
+#include "billiard_shot_planner/scenarios/ball_collision.hpp"
 #include "json_fields.hpp"
 
 namespace billiard_shot_planner
@@ -70,6 +72,140 @@ Expected<json> solveChain(const json& request, const SolverOptions& options)
   out["impulses"] = impulses;
   json states = json::array();
   for (const ImpactState& state : r.states)
+    states.push_back(state.active);
+  out["states"] = states;
+  return out;
+}
+namespace
+{
+/// "ball_ball" or "cloth": {"restitution", "friction", "eta2"}, each optional over `surface`.
+Status readSurface(const json& request, const std::string& key, SurfaceContact& surface)
+{
+  auto fields = object(request, key, false);
+  if (!fields)
+    return fields.error();
+  return readNumbers(fields.value(),
+                     {{"restitution", &surface.restitution}, {"friction", &surface.friction}, {"eta2", &surface.eta2}},
+                     key);
+}
+
+/// The ball–ball friction: a constant "friction", or "friction_model": "alciatore" (or "constant" with "friction").
+Status readBallBallFriction(const json& request, BallCollision& collision)
+{
+  const json fields = request.contains("ball_ball") ? request.at("ball_ball") : json::object();
+  if (fields.contains("friction"))
+    collision.friction_model = BallBallFriction::Constant;
+  if (!fields.contains("friction_model"))
+    return {};
+  const json& model = fields.at("friction_model");
+  if (model == "alciatore" && !fields.contains("friction"))
+    collision.friction_model = BallBallFriction::Alciatore;
+  else if (model != "constant" || !fields.contains("friction"))
+    return invalidArgument("ball_ball.friction_model",
+                           "must be \"alciatore\" (without friction) or \"constant\" (with friction)");
+  return {};
+}
+
+Expected<CollidingBall> collidingBall(const json& fields, const std::string& prefix)
+{
+  if (!fields.is_object())
+    return invalidArgument(prefix, "must be an object {\"position\": [x, y], \"v\": [x, y, z], \"omega\": [x, y, z]}");
+  auto position = numbers(fields, "position");
+  if (!position)
+    return nested(prefix, position.error());
+  if (position.value().size() != 2)
+    return invalidArgument(prefix + ".position", "must be [x, y]");
+  auto velocity = vector3(fields, "v", Eigen::Vector3d::Zero());
+  if (!velocity)
+    return nested(prefix, velocity.error());
+  auto spin = vector3(fields, "omega", Eigen::Vector3d::Zero());
+  if (!spin)
+    return nested(prefix, spin.error());
+  return CollidingBall{{position.value()[0], position.value()[1]}, velocity.value(), spin.value()};
+}
+
+Status readBalls(const json& request, BallCollision& collision)
+{
+  if (!request.contains("balls") || !request.at("balls").is_array())
+    return invalidArgument("balls", "is required: an array of {\"position\", \"v\", \"omega\"}");
+  const json& balls = request.at("balls");
+  for (std::size_t i = 0; i < balls.size(); ++i)
+  {
+    auto ball = collidingBall(balls[i], "balls[" + std::to_string(i) + "]");
+    if (!ball)
+      return ball.error();
+    collision.balls.push_back(ball.value());
+  }
+  return {};
+}
+
+Expected<BallCollision> ballCollisionFromJson(const json& request)
+{
+  BallCollision collision;
+  if (Status status =
+          firstError({readBalls(request, collision), readSurface(request, "ball_ball", collision.ball_ball),
+                      readSurface(request, "cloth", collision.cloth), readBallBallFriction(request, collision),
+                      readNumbers(request, {{"ball_mass", &collision.ball_mass},
+                                            {"ball_radius", &collision.ball_radius},
+                                            {"stiffness_ratio", &collision.stiffness_ratio},
+                                            {"touching_tolerance", &collision.touching_tolerance}})});
+      !status)
+    return status.error();
+  return collision;
+}
+
+/// The scenario names a ball's fields as BallCollision does ("balls[2].velocity"); the request calls them v, omega.
+Error inRequestTerms(Error error)
+{
+  for (auto [field, key] : {std::pair{".velocity", ".v"}, std::pair{".angular_velocity", ".omega"}})
+  {
+    const std::size_t at = error.field.rfind(field);
+    if (error.field.rfind("balls[", 0) == 0 && at != std::string::npos && at + std::strlen(field) == error.field.size())
+      error.field.replace(at, std::strlen(field), key);
+  }
+  return error;
+}
+
+json contactJson(const BallCollisionResult& r, std::size_t k)
+{
+  const ContactImpulse& impulse = r.impact.impulses[k];
+  json contact{
+      {"name", r.contact_names[k]},
+      {"impulse", {{"normal", impulse.normal}, {"tangential", {impulse.tangential.x(), impulse.tangential.y()}}}}};
+  if (k < r.pairs.size())
+  {
+    contact["balls"] = {r.pairs[k].b, r.pairs[k].a};
+    contact["friction"] = r.pairs[k].friction;
+  }
+  else
+  {
+    contact["ball"] = k - r.pairs.size();
+  }
+  return contact;
+}
+}  // namespace
+
+Expected<json> solveBallBall(const json& request, const SolverOptions& options)
+{
+  auto collision = ballCollisionFromJson(request);
+  if (!collision)
+    return collision.error();
+  auto result = solve(collision.value(), options);
+  if (!result)
+    return inRequestTerms(result.error());
+  const BallCollisionResult& r = result.value();
+  json out = commonResultJson(r.impact, r.contact_names);
+  json balls = json::array();
+  for (const CollidedBall& ball : r.balls)
+    balls.push_back({{"v", {ball.velocity.x(), ball.velocity.y(), ball.velocity.z()}},
+                     {"omega", {ball.angular_velocity.x(), ball.angular_velocity.y(), ball.angular_velocity.z()}}});
+  out["balls"] = balls;
+  json contacts = json::array();
+  for (std::size_t k = 0; k < r.impact.impulses.size(); ++k)
+    contacts.push_back(contactJson(r, k));
+  out["contacts"] = contacts;
+  json states = json::array();
+  for (const ImpactState& state : r.impact.states)
     states.push_back(state.active);
   out["states"] = states;
   return out;

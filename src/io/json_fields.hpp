@@ -49,6 +49,7 @@ json commonResultJson(const ImpactResult& result, const std::vector<std::string>
 /// The problems, one function each (json_collisions.cpp, json_strike.cpp).
 Expected<json> solveBallBallTable(const json& request, const SolverOptions& options);
 Expected<json> solveChain(const json& request, const SolverOptions& options);
+Expected<json> solveBallBall(const json& request, const SolverOptions& options);
 Expected<json> solveCueStrike(const json& request, const SolverOptions& options);
 Expected<json> solveBallTable(const json& request, const SolverOptions& options);
 Expected<json> solveBallMotion(const json& request, const SolverOptions& options);

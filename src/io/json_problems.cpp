@@ -14,9 +14,13 @@ using nlohmann::json;
 using Solver = Expected<json> (*)(const json&, const SolverOptions&);
 
 const std::pair<const char*, Solver> PROBLEMS[] = {
-    {"ball_ball_table", json_io::solveBallBallTable}, {"chain", json_io::solveChain},
-    {"cue_strike", json_io::solveCueStrike},          {"ball_table", json_io::solveBallTable},
-    {"ball_motion", json_io::solveBallMotion},        {"shot", json_io::solveShot},
+    {"ball_ball_table", json_io::solveBallBallTable},
+    {"chain", json_io::solveChain},
+    {"ball_ball", json_io::solveBallBall},
+    {"cue_strike", json_io::solveCueStrike},
+    {"ball_table", json_io::solveBallTable},
+    {"ball_motion", json_io::solveBallMotion},
+    {"shot", json_io::solveShot},
 };
 
 /// `path` extended by one step: a key of an object, or an index of an array.

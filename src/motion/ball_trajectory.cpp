@@ -42,6 +42,8 @@ const char* toString(MotionEventType type)
       return "cushion_contact";
     case MotionEventType::Pocketed:
       return "pocketed";
+    case MotionEventType::BallCollision:
+      return "ball_collision";
     case MotionEventType::Rest:
       return "rest";
     case MotionEventType::TimeLimit:

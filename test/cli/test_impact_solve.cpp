@@ -6,7 +6,9 @@
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 
 namespace bsp = billiard_shot_planner;
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -348,5 +350,82 @@ TEST(ImpactSolve, WorkAndOutputAreBounded)
   {
     EXPECT_EQ(run.exit_code, 1) << run.output;
     EXPECT_NE(run.output.find("time_limit_exceeded"), std::string::npos) << run.output;
+  }
+}
+
+TEST(ImpactSolve, BallBallHeadOnStunShot)
+{
+  // Equal balls, the cue ball sliding without spin at 2 m/s into a resting ball: (1 ± e)/2 · V, the cloth idle.
+  const SolverRun run = runSolver(
+      R"({"problem": "ball_ball", "balls": [{"position": [0, 0], "v": [2, 0, 0], "omega": [0, 0, 0]},
+                                            {"position": [0.0572, 0]}],
+          "ball_ball": {"restitution": 0.9, "friction": 0.06, "eta2": 1.2},
+          "cloth": {"restitution": 0.5, "friction": 0.2, "eta2": 10},
+          "ball_mass": 0.17, "ball_radius": 0.0286, "stiffness_ratio": 0.1})");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto out = nlohmann::json::parse(run.output);
+  ASSERT_EQ(out["balls"].size(), 2u);
+  EXPECT_NEAR(out["balls"][0]["v"][0].get<double>(), 0.1, 1e-9);
+  EXPECT_NEAR(out["balls"][1]["v"][0].get<double>(), 1.9, 1e-9);
+  ASSERT_EQ(out["contacts"].size(), 3u);  // the pair, then each ball's cloth
+  EXPECT_EQ(out["contacts"][0]["name"], "ball0-ball1");
+  EXPECT_EQ(out["contacts"][0]["friction"], 0.06);
+  EXPECT_NEAR(out["contacts"][0]["impulse"]["normal"].get<double>(), 0.17 * 1.9, 1e-9);
+  EXPECT_EQ(out["contacts"][2]["name"], "ball1-cloth");
+  EXPECT_EQ(out["states"].front(), (std::vector<int>{0}));
+  EXPECT_TRUE(out["states"].back().empty());
+  EXPECT_NEAR(out["energy"]["lost"].get<double>(), 0.5 * 0.17 * 4.0 * (1.0 - 0.81) / 2.0, 1e-9);
+  EXPECT_FALSE(out["events"].empty());
+}
+
+TEST(ImpactSolve, BallBallCutShotWithAlciatoreFriction)
+{
+  // A half-ball stun hit at 1 m/s with the defaults and Alciatore's μ(v) at the slip speed V sin 30°: the pair's
+  // friction is reported, and the object ball is thrown by atan(min(μ, 2 tan φ/(7(1 + e)))) (the rigid limit, which
+  // the compliant contact meets where it slips throughout, as here).
+  const double cut = M_PI / 6.0;
+  nlohmann::json request{
+      {"problem", "ball_ball"},
+      {"balls",
+       {{{"position", {0, 0}}, {"v", {1, 0, 0}}}, {{"position", {0.0572 * std::cos(cut), 0.0572 * std::sin(cut)}}}}},
+      {"ball_ball", {{"friction_model", "alciatore"}}}};
+  const SolverRun run = runSolver(request.dump());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto out = nlohmann::json::parse(run.output);
+  const double mu = 9.951e-3 + 0.108 * std::exp(-1.088 * 0.5);
+  EXPECT_NEAR(out["contacts"][0]["friction"].get<double>(), mu, 1e-12);
+  const auto v = out["balls"][1]["v"].get<std::vector<double>>();
+  const double along = v[0] * std::cos(cut) + v[1] * std::sin(cut);
+  const double across = v[0] * std::sin(cut) - v[1] * std::cos(cut);
+  EXPECT_NEAR(std::atan2(across, along), std::atan(std::min(mu, 2.0 * std::tan(cut) / (7.0 * 1.95))), 1e-9);
+}
+
+TEST(ImpactSolve, BallBallBadInputNamesTheField)
+{
+  const std::string two = R"("balls": [{"position": [0, 0], "v": [1, 0, 0]}, {"position": [0.0572, 0]}])";
+  const std::string cases[][2] = {
+      {R"({"problem": "ball_ball", "balls": [{"position": [0, 0], "v": [1, 0, 0]}]})", "balls"},
+      {R"({"problem": "ball_ball"})", "balls"},
+      {R"({"problem": "ball_ball", "balls": [{"position": [0, 0]}, {"position": [0.05, 0], "v": [-1, 0, 0]}]})",
+       "balls[1].position"},
+      {R"({"problem": "ball_ball", "balls": [{"position": [0, 0, 0]}, {"position": [0.0572, 0]}]})",
+       "balls[0].position"},
+      {R"({"problem": "ball_ball", "balls": [{"position": [0, 0], "v": [1, 0]}, {"position": [0.0572, 0]}]})",
+       "balls[0].v"},
+      {R"({"problem": "ball_ball", "balls": [{"position": [0, 0], "omega": [1e9, 0, 0]}, {"position": [0.0572, 0]}]})",
+       "balls[0].omega"},
+      {R"({"problem": "ball_ball", )" + two + R"(, "ball_ball": {"eta2": -1}})", "ball_ball.eta2"},
+      {R"({"problem": "ball_ball", )" + two + R"(, "ball_ball": {"friction": 0.1, "friction_model": "alciatore"}})",
+       "ball_ball.friction_model"},
+      {R"({"problem": "ball_ball", )" + two + R"(, "cloth": {"friction": "high"}})", "cloth.friction"},
+      {R"({"problem": "ball_ball", )" + two + R"(, "stiffness_ratio": 1e-5})", "stiffness_ratio"},
+      {R"({"problem": "ball_ball", "balls": [{"position": [0, 0], "v": [1, 0, 0]}, {"position": [0.1, 0]}]})",
+       "no two balls touch"},
+  };
+  for (const auto& c : cases)
+  {
+    const SolverRun run = runSolver(c[0]);
+    EXPECT_EQ(run.exit_code, 2) << c[0] << "\n" << run.output;
+    EXPECT_NE(run.output.find(c[1]), std::string::npos) << c[0] << "\n" << run.output;
   }
 }

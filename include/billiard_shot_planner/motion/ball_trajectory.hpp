@@ -34,9 +34,10 @@ enum class MotionEventType
   /// The ball comes back to the cushion it last left, both times slower than 1e-6 m/s: its spin presses it against
   /// the cushion (sustained contact, not modelled; the path ends)
   CushionContact,
-  Pocketed,   ///< the centre enters a pocket's capture region
-  Rest,       ///< everything has stopped
-  TimeLimit,  ///< the trajectory was cut at MotionParameters::max_time or max_events
+  Pocketed,       ///< the centre enters a pocket's capture region
+  BallCollision,  ///< a multiple impact with other balls (and the cloth) that touch it
+  Rest,           ///< everything has stopped
+  TimeLimit,      ///< the trajectory was cut at MotionParameters::max_time or max_events
 };
 
 enum class MotionOutcome
@@ -73,6 +74,7 @@ struct MotionEvent
   BallState state;   ///< after the event (after the impact for landings and cushion hits)
   int cushion = -1;  ///< 0: −x, 1: +x, 2: −y, 3: +y (cushion hits)
   int pocket = -1;   ///< index into Table::pockets (pocketed)
+  int ball = -1;     ///< index of a ball it met, in the simulation's list (ball collisions)
 };
 
 struct TrajectorySample

@@ -1,0 +1,93 @@
+#pragma once
+
+// One ball's motion on the table, event by event: closed-form phases, and the events it meets on its own (a phase
+// ending, a landing, a cushion, a pocket, the time limit). The table's simulation runs one mover per ball and
+// interrupts a mover where the ball meets another ball.
+#include <chrono>
+#include <limits>
+
+#include "billiard_shot_planner/motion/ball_motion.hpp"
+#include "phase_dynamics.hpp"
+#include "table_events.hpp"
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+/// The wall-clock deadline shared by every impact of one simulation (SolverOptions::max_seconds bounds the whole).
+using Deadline = std::chrono::steady_clock::time_point;
+
+Deadline deadlineAfter(double seconds);
+
+/// Checks a ball's start: finite, plausible speeds, on the cloth, clear of the cushions and the pockets. The error
+/// names the field ("position", "v", "omega") after `prefix` ("balls[3].").
+Status checkStart(const BallState& start, const Ball& ball, const Table& table, const std::string& prefix = "");
+
+class BallMover
+{
+public:
+  enum class Status
+  {
+    Moving,   ///< on a segment that ends at nextEventTime()
+    Resting,  ///< at rest on the cloth: another ball may set it moving again
+    Ended,    ///< pocketed, off the table, pressed against a cushion or at the time limit
+  };
+
+  BallMover(const Ball& ball, const Table& table, const MotionParameters& parameters, const Deadline& deadline);
+
+  /// The Start event at t = 0 and the first segment.
+  void begin(BallState state);
+  Status status() const { return status_; }
+  /// Absolute time of the current segment's own end; +∞ when the ball rests or has ended.
+  double nextEventTime() const;
+  /// The current segment (a resting ball's: stationary from its rest time, without end).
+  const MotionSegment& segment() const { return segment_; }
+  /// Ends the current segment at its own end, handles its event and plans the next segment.
+  Expected<bool> runOwnEvent();
+  /// Ends the current segment at time t < nextEventTime() where an impact with other balls gives the ball the
+  /// state `after`, records it as a BallCollision event with `other` (the index of a ball it met) and plans on.
+  void interrupt(double t, const BallState& after, int other);
+  /// Moves the trajectory out; the mover is done.
+  BallTrajectory takeTrajectory() { return std::move(trajectory_); }
+  const BallTrajectory& trajectory() const { return trajectory_; }
+  /// Counts changes of the current segment: a cache of contact times is valid while both balls' counts stay.
+  unsigned version() const { return version_; }
+
+private:
+  /// Where one phase ends: by itself, at a cushion, in a pocket or at the time limit.
+  struct SegmentEnd
+  {
+    double duration = std::numeric_limits<double>::infinity();
+    MotionEventType event = MotionEventType::Rest;
+    int cushion = -1;
+    int pocket = -1;
+    NoseContact contact = NoseContact::Impact;
+  };
+
+  void plan(const BallState& state, double t);
+  SegmentEnd segmentEnd(const MotionSegment& segment, const PhaseMotion& motion, double t) const;
+  Expected<bool> hitCushion(int rail, NoseContact contact, BallState& state, double t);
+  Expected<bool> land(BallState& state, double t);
+  Expected<SolverOptions> impactOptions() const;
+  bool pressedAgainst(int rail, bool on_cloth, double approach) const;
+  void end(MotionEventType event, MotionOutcome outcome, double t, const BallState& state);
+
+  const Ball& ball_;
+  const Table& table_;
+  const MotionParameters& p_;
+  const Deadline& deadline_;
+  BallTrajectory trajectory_;
+  MotionSegment segment_;
+  SegmentEnd end_;
+  Status status_ = Status::Resting;
+  unsigned version_ = 0;
+  struct CushionHitRecord
+  {
+    int rail = -1;
+    bool on_cloth = false;
+    double rebound_speed = 0.0;  ///< m/s away from the cushion: horizontally on the cloth, along the normal in the air
+  } last_hit_;
+};
+
+}  // namespace detail
+}  // namespace billiard_shot_planner

@@ -1,0 +1,46 @@
+#include "table_collisions.hpp"
+
+#include <algorithm>
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+namespace
+{
+BallCollision collisionOf(const std::vector<BallState>& touching, const Ball& ball, const Table& table,
+                          const BallContactSettings& contact)
+{
+  BallCollision collision;
+  collision.ball_mass = ball.mass;
+  collision.ball_radius = ball.radius;
+  collision.ball_ball = contact.ball_ball;
+  collision.friction_model = contact.friction_model;
+  collision.cloth = table.cloth;
+  collision.stiffness_ratio = contact.stiffness_ratio;
+  for (const BallState& state : touching)
+    collision.balls.push_back({state.position.head<2>(), state.velocity, state.angular_velocity,
+                               std::max(state.position.z() - ball.radius, 0.0)});
+  return collision;
+}
+}  // namespace
+
+Expected<std::vector<BallState>> resolveBallImpact(const std::vector<BallState>& touching, const Ball& ball,
+                                                   const Table& table, const BallContactSettings& contact,
+                                                   const SolverOptions& options)
+{
+  auto solved = solve(collisionOf(touching, ball, table, contact), options);
+  if (!solved && solved.error().code == ErrorCode::NoApproachingContact)
+    return touching;  // a graze within the touching tolerance: nothing presses, nothing changes
+  if (!solved)
+    return solved.error();
+  std::vector<BallState> after = touching;
+  for (std::size_t i = 0; i < after.size(); ++i)
+  {
+    after[i].velocity = solved.value().balls[i].velocity;
+    after[i].angular_velocity = solved.value().balls[i].angular_velocity;
+  }
+  return after;
+}
+}  // namespace detail
+}  // namespace billiard_shot_planner

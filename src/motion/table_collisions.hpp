@@ -1,0 +1,18 @@
+#pragma once
+
+#include <vector>
+
+#include "billiard_shot_planner/impact/solver_options.hpp"
+#include "billiard_shot_planner/motion/table_simulation.hpp"
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+/// The states right after the multiple impact of balls that touch (each with its cloth contact), by the
+/// ball-collision scenario: one engine problem for the whole cluster.
+Expected<std::vector<BallState>> resolveBallImpact(const std::vector<BallState>& touching, const Ball& ball,
+                                                   const Table& table, const BallContactSettings& contact,
+                                                   const SolverOptions& options);
+}  // namespace detail
+}  // namespace billiard_shot_planner

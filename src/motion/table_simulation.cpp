@@ -1,0 +1,78 @@
+#include "billiard_shot_planner/motion/table_simulation.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "ball_contact_time.hpp"
+#include "ball_mover.hpp"
+#include "billiard_shot_planner/core/validation.hpp"
+#include "table_event_loop.hpp"
+
+namespace billiard_shot_planner
+{
+namespace detail
+{
+namespace
+{
+std::string ballField(std::size_t i)
+{
+  return "balls[" + std::to_string(i) + "]";
+}
+
+Status checkBalls(const std::vector<TableBall>& balls, const Ball& ball, const Table& table)
+{
+  if (balls.empty())
+    return invalidArgument("balls", "at least one ball is needed");
+  if (balls.size() > MAX_TABLE_BALLS)
+    return invalidArgument(
+        "balls", "at most " + std::to_string(MAX_TABLE_BALLS) + " balls, got " + std::to_string(balls.size()));
+  std::set<std::string> ids;
+  for (std::size_t i = 0; i < balls.size(); ++i)
+  {
+    if (balls[i].id.empty())
+      return invalidArgument(ballField(i) + ".id", "must not be empty");
+    if (!ids.insert(balls[i].id).second)
+      return invalidArgument(ballField(i) + ".id", "\"" + balls[i].id + "\" is used by another ball");
+    if (Status status = checkStart(balls[i].state, ball, table, ballField(i) + "."); !status)
+      return status;
+  }
+  for (std::size_t i = 0; i < balls.size(); ++i)
+    for (std::size_t j = i + 1; j < balls.size(); ++j)
+    {
+      const double gap =
+          (balls[i].state.position.head<2>() - balls[j].state.position.head<2>()).norm() - 2.0 * ball.radius;
+      if (gap < -BALL_TOUCHING_TOLERANCE)
+        return invalidArgument(ballField(j) + ".position", "overlaps ball \"" + balls[i].id + "\" by " +
+                                                               formatNumber(-gap) + " m (touching balls are " +
+                                                               "allowed within " +
+                                                               formatNumber(BALL_TOUCHING_TOLERANCE) + " m)");
+    }
+  return {};
+}
+
+}  // namespace
+}  // namespace detail
+
+double TableTrajectory::duration() const
+{
+  double last = 0.0;
+  for (const BallTrajectory& b : balls)
+    last = std::max(last, b.events.empty() ? 0.0 : b.events.back().time);
+  return last;
+}
+
+Expected<TableTrajectory> simulateTable(const std::vector<TableBall>& balls, const Ball& ball, const Table& table,
+                                        const MotionParameters& parameters, const BallContactSettings& contact)
+{
+  if (Status status = firstError({requirePositive(ball.mass, "ball_mass"), requirePositive(ball.radius, "ball_radius"),
+                                  validate(parameters), validate(table)});
+      !status)
+    return status.error();
+  if (Status status = validateCushionHeight(table.cushion_height, ball.radius, "table.cushion_height"); !status)
+    return status.error();
+  if (Status status = detail::checkBalls(balls, ball, table); !status)
+    return status.error();
+  return detail::runTableSimulation(balls, ball, table, parameters, contact);
+}
+
+}  // namespace billiard_shot_planner
