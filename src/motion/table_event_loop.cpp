@@ -130,6 +130,7 @@ private:
   {
     std::vector<int> cluster = touchingCluster(t, i, j);
     std::vector<BallState> states;
+    states.reserve(cluster.size());
     for (int k : cluster)
       states.push_back(movers_[k].segment().at(t));
     auto after = resolveBallImpact(states, ball_, table_, contact_, impactOptions());
