@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstring>
 #include <string>
 #include <tuple>
@@ -154,6 +155,28 @@ Expected<BallCollision> ballCollisionFromJson(const json& request)
   return collision;
 }
 
+}  // namespace
+
+Expected<BallContactSettings> ballContactFromJson(const json& request)
+{
+  BallCollision collision;
+  auto fields = object(request, "ball_ball", false);
+  if (!fields)
+    return fields.error();
+  if (Status status = firstError(
+          {readSurface(request, "ball_ball", collision.ball_ball), readBallBallFriction(request, collision),
+           readNumbers(fields.value(), {{"cloth_stiffness_ratio", &collision.stiffness_ratio}}, "ball_ball")});
+      !status)
+    return status.error();
+  if (Status status = firstError({validate(collision.ball_ball, "ball_ball"),
+                                  requireStiffnessRatio(collision.stiffness_ratio, "ball_ball.cloth_stiffness_ratio")});
+      !status)
+    return status.error();
+  return BallContactSettings{collision.ball_ball, collision.friction_model, collision.stiffness_ratio};
+}
+
+namespace
+{
 /// The scenario names a ball's fields as BallCollision does ("balls[2].velocity"); the request calls them v, omega.
 Error inRequestTerms(Error error)
 {
@@ -179,7 +202,8 @@ json contactJson(const BallCollisionResult& r, std::size_t k)
   }
   else
   {
-    contact["ball"] = k - r.pairs.size();
+    const auto ball = std::find(r.cloth_contacts.begin(), r.cloth_contacts.end(), k);
+    contact["ball"] = static_cast<std::size_t>(ball - r.cloth_contacts.begin());
   }
   return contact;
 }

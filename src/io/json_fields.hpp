@@ -10,6 +10,7 @@
 #include "billiard_shot_planner/core/expected.hpp"
 #include "billiard_shot_planner/impact/impact_result.hpp"
 #include "billiard_shot_planner/impact/solver_options.hpp"
+#include "billiard_shot_planner/motion/table_simulation.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 
 namespace billiard_shot_planner
@@ -46,6 +47,10 @@ json snapshotJson(const ImpactSnapshot& snap);
 /// events, ends_of_compression, converged, energy, samples: what every problem reports the same way.
 json commonResultJson(const ImpactResult& result, const std::vector<std::string>& contact_names = {});
 
+/// The ball–ball contact of a table: "ball_ball": {"restitution", "friction" or "friction_model": "alciatore",
+/// "eta2", "cloth_stiffness_ratio"}, each optional (json_collisions.cpp).
+Expected<BallContactSettings> ballContactFromJson(const json& request);
+
 /// The problems, one function each (json_collisions.cpp, json_strike.cpp).
 Expected<json> solveBallBallTable(const json& request, const SolverOptions& options);
 Expected<json> solveChain(const json& request, const SolverOptions& options);
@@ -54,6 +59,7 @@ Expected<json> solveCueStrike(const json& request, const SolverOptions& options)
 Expected<json> solveBallTable(const json& request, const SolverOptions& options);
 Expected<json> solveBallMotion(const json& request, const SolverOptions& options);
 Expected<json> solveShot(const json& request, const SolverOptions& options);
+Expected<json> solveTableShot(const json& request, const SolverOptions& options);
 
 /// The cue strike fields of a request (json_strike.cpp), the strike solved, and its result as JSON.
 Expected<CueStrike> cueStrikeFromJson(const json& request);

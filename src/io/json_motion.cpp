@@ -4,12 +4,11 @@
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "json_fields.hpp"
+#include "json_motion.hpp"
 
 namespace billiard_shot_planner
 {
 namespace json_io
-{
-namespace
 {
 std::vector<double> toVector3(const Eigen::Vector3d& v)
 {
@@ -26,6 +25,8 @@ Expected<Eigen::Vector2d> vector2(const json& object, const std::string& key)
   return Eigen::Vector2d(values.value()[0], values.value()[1]);
 }
 
+namespace
+{
 Expected<std::vector<Pocket>> pockets(const json& table)
 {
   const json& list = table.at("pockets");
@@ -130,26 +131,33 @@ Expected<MotionParameters> motionParameters(const json& request, const SolverOpt
   return p;
 }
 
+}  // namespace
+
 json stateJson(const BallState& s)
 {
   return json{
       {"position", toVector3(s.position)}, {"v", toVector3(s.velocity)}, {"omega", toVector3(s.angular_velocity)}};
 }
 
+json eventJson(const MotionEvent& e)
+{
+  json item = stateJson(e.state);
+  item["t"] = e.time;
+  item["type"] = toString(e.type);
+  if (e.cushion >= 0)
+    item["cushion"] = e.cushion;
+  if (e.pocket >= 0)
+    item["pocket"] = e.pocket;
+  return item;
+}
+
+namespace
+{
 json trajectoryJson(const BallTrajectory& trajectory, double spacing)
 {
   json events = json::array();
   for (const MotionEvent& e : trajectory.events)
-  {
-    json item = stateJson(e.state);
-    item["t"] = e.time;
-    item["type"] = toString(e.type);
-    if (e.cushion >= 0)
-      item["cushion"] = e.cushion;
-    if (e.pocket >= 0)
-      item["pocket"] = e.pocket;
-    events.push_back(item);
-  }
+    events.push_back(eventJson(e));
   json samples = json::array();
   for (const TrajectorySample& s : trajectory.sample(spacing))
     samples.push_back({{"t", s.time}, {"position", toVector3(s.state.position)}, {"phase", toString(s.phase)}});
@@ -160,14 +168,7 @@ json trajectoryJson(const BallTrajectory& trajectory, double spacing)
               {"rest_position", toVector3(trajectory.finalState().position)}};
 }
 
-/// Everything but the start state: ball, table and motion parameters, and the sample spacing.
-struct MotionSetup
-{
-  Ball ball;
-  Table table;
-  MotionParameters parameters;
-  double spacing = 0.01;
-};
+}  // namespace
 
 Expected<MotionSetup> motionSetup(const json& request, const SolverOptions& options, const SurfaceContact* cloth,
                                   const Ball& ball)
@@ -189,6 +190,8 @@ Expected<MotionSetup> motionSetup(const json& request, const SolverOptions& opti
   return setup;
 }
 
+namespace
+{
 Expected<json> predict(const MotionSetup& setup, const Eigen::Vector2d& position, const Eigen::Vector3d& v,
                        const Eigen::Vector3d& omega)
 {

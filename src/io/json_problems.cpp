@@ -21,6 +21,7 @@ const std::pair<const char*, Solver> PROBLEMS[] = {
     {"ball_table", json_io::solveBallTable},
     {"ball_motion", json_io::solveBallMotion},
     {"shot", json_io::solveShot},
+    {"table_shot", json_io::solveTableShot},
 };
 
 /// `path` extended by one step: a key of an object, or an index of an array.

@@ -429,3 +429,97 @@ TEST(ImpactSolve, BallBallBadInputNamesTheField)
     EXPECT_NE(run.output.find(c[1]), std::string::npos) << c[0] << "\n" << run.output;
   }
 }
+
+namespace
+{
+/// A table_shot along the diagonal towards the (+x, +y) corner pocket: cue ball at 0.1 (2, 1), object ball "one"
+/// at 0.4 (2, 1), both on the line through the pocket's centre 0.635 (2, 1); a level centre hit at 2 m/s.
+nlohmann::json straightInShot()
+{
+  auto shot = nlohmann::json::parse(stroke(R"({"phi_deg": 26.56505117707799, "theta_deg": 0, "speed": 2})"));
+  shot["problem"] = "table_shot";
+  shot["balls"] =
+      nlohmann::json::parse(R"([{"id": "cue", "position": [0.2, 0.1]}, {"id": "one", "position": [0.8, 0.4]}])");
+  return shot;
+}
+}  // namespace
+
+// A straight-in shot: the cue ball's first contact is the object ball, which leaves along the line of centres
+// (no throw without cut or side spin: it stays on the diagonal to 1e-9 m until the pocket's jaw) and drops in the
+// corner pocket.
+TEST(ImpactSolve, TableShotPotsAStraightInBall)
+{
+  const SolverRun run = runSolver(straightInShot().dump());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto out = nlohmann::json::parse(run.output);
+  EXPECT_EQ(out["first_contact"], "one");
+  ASSERT_FALSE(out["collisions"].empty());
+  EXPECT_EQ(out["collisions"][0]["balls"], (std::vector<std::string>{"cue", "one"}));
+  const auto& one = out["balls"][1];
+  EXPECT_EQ(one["id"], "one");
+  EXPECT_EQ(one["outcome"], "pocketed");
+  const auto pocketed = std::find_if(out["pocketed"].begin(), out["pocketed"].end(),
+                                     [](const nlohmann::json& p) { return p["id"] == "one"; });
+  ASSERT_NE(pocketed, out["pocketed"].end());
+  for (const auto& event : one["events"])
+  {
+    if (event["type"] == "cushion_hit")
+      break;  // the pocket's jaw: the corner's cushions reach into its capture circle
+    const double x = event["position"][0].get<double>(), y = event["position"][1].get<double>();
+    EXPECT_NEAR(y, 0.5 * x, 1e-9) << event["type"];
+  }
+  EXPECT_TRUE(out["strike"].contains("v"));
+  EXPECT_GT(out["duration"].get<double>(), 0.0);
+  EXPECT_FALSE(one.contains("samples"));
+}
+
+// With "samples": true every ball is sampled at the same instants k·sample_spacing (plus its own events).
+TEST(ImpactSolve, TableShotSamplesEveryBallAtTheSameTimes)
+{
+  auto shot = straightInShot();
+  shot["samples"] = true;
+  shot["sample_spacing"] = 0.05;
+  const SolverRun run = runSolver(shot.dump());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto out = nlohmann::json::parse(run.output);
+  for (const auto& ball : out["balls"])
+  {
+    std::vector<double> times;
+    for (const auto& sample : ball["samples"])
+      times.push_back(sample["t"].get<double>());
+    for (double t = 0.0; t < out["duration"].get<double>(); t += 0.05)
+      EXPECT_TRUE(std::any_of(times.begin(), times.end(), [&](double s) { return std::abs(s - t) < 1e-9; }))
+          << ball["id"] << " t " << t;
+  }
+}
+
+TEST(ImpactSolve, TableShotBadInputNamesTheBall)
+{
+  auto expectField = [](nlohmann::json shot, const std::string& field)
+  {
+    const SolverRun run = runSolver(shot.dump());
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_NE(run.output.find(field), std::string::npos) << run.output;
+  };
+  auto duplicate = straightInShot();
+  duplicate["balls"][1]["id"] = "cue";
+  expectField(duplicate, "balls[1].id");
+  auto overlap = straightInShot();
+  overlap["balls"][1]["position"] = {0.21, 0.1};
+  expectField(overlap, "balls[1].position");
+  auto pocket = straightInShot();
+  pocket["balls"][1]["position"] = {1.26, 0.63};
+  expectField(pocket, "balls[1].position");
+  auto unknown = straightInShot();
+  unknown["cue_ball"] = "white";
+  expectField(unknown, "cue_ball");
+  auto nan = straightInShot();
+  nan["balls"][1]["position"] = {"x", 0.4};
+  expectField(nan, "balls[1].position");
+  auto no_id = straightInShot();
+  no_id["balls"][1].erase("id");
+  expectField(no_id, "balls[1].id");
+  auto friction = straightInShot();
+  friction["ball_ball"] = {{"friction_model", "magic"}};
+  expectField(friction, "ball_ball.friction_model");
+}

@@ -1,0 +1,38 @@
+#pragma once
+
+// The motion parts of impact_solve's JSON, shared by ball_motion, shot and table_shot (json_motion.cpp).
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "billiard_shot_planner/core/expected.hpp"
+#include "billiard_shot_planner/motion/ball_motion.hpp"
+#include "billiard_shot_planner/scenarios/sphere_kinematics.hpp"
+
+namespace billiard_shot_planner
+{
+namespace json_io
+{
+using nlohmann::json;
+
+/// Everything but the start state: ball, table and motion parameters, and the sample spacing.
+struct MotionSetup
+{
+  Ball ball;
+  Table table;
+  MotionParameters parameters;
+  double spacing = 0.01;
+};
+
+/// The table ("table_file", "table"), the motion parameters and "sample_spacing" of a request; `cloth`, when
+/// given, is the cloth the strike used (the table's unless a table file overrides it).
+Expected<MotionSetup> motionSetup(const json& request, const SolverOptions& options, const SurfaceContact* cloth,
+                                  const Ball& ball);
+/// object[key] as [x, y].
+Expected<Eigen::Vector2d> vector2(const json& object, const std::string& key);
+std::vector<double> toVector3(const Eigen::Vector3d& v);
+json stateJson(const BallState& state);
+/// {t, type, position, v, omega, cushion?, pocket?}
+json eventJson(const MotionEvent& event);
+}  // namespace json_io
+}  // namespace billiard_shot_planner
