@@ -76,7 +76,7 @@ void BM_TrajectoryThreeCushions(benchmark::State& state)
   int hits = 0;
   for (auto _ : state)
   {
-    const auto trajectory = bsp::predictTrajectory(shot.start, bsp::Ball{}, shot.table);
+    const auto trajectory = bsp::predictTrajectory(shot.start, bsp::BallProperties{}, shot.table);
     hits = 0;
     for (const auto& event : trajectory.value().events)
       hits += event.type == bsp::MotionEventType::CushionHit;

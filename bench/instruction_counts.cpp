@@ -37,7 +37,7 @@ const std::map<std::string, std::function<bool()>>& problems()
        []
        {
          const bench::ThreeCushionShot shot = bench::threeCushionShot();
-         return succeeded(bsp::predictTrajectory(shot.start, bsp::Ball{}, shot.table));
+         return succeeded(bsp::predictTrajectory(shot.start, bsp::BallProperties{}, shot.table));
        }},
       {"prediction", [] { return succeeded(bsp::predictShot(bench::serviceMasseShot(), bsp::ShotConfiguration{})); }},
   };

@@ -171,7 +171,7 @@ json trajectoryJson(const BallTrajectory& trajectory, double spacing)
 }  // namespace
 
 Expected<MotionSetup> motionSetup(const json& request, const SolverOptions& options, const SurfaceContact* cloth,
-                                  const Ball& ball)
+                                  const BallProperties& ball)
 {
   MotionSetup setup;
   setup.ball = ball;
@@ -208,7 +208,7 @@ Expected<json> predict(const MotionSetup& setup, const Eigen::Vector2d& position
 
 Expected<json> solveBallMotion(const json& request, const SolverOptions& options)
 {
-  Ball ball;
+  BallProperties ball;
   if (Status status = readNumbers(request, {{"ball_mass", &ball.mass}, {"ball_radius", &ball.radius}}); !status)
     return status.error();
   auto setup = motionSetup(request, options, nullptr, ball);
@@ -233,7 +233,7 @@ Expected<json> solveShot(const json& request, const SolverOptions& options)
   if (!strike)
     return strike.error();
   const CueStrike& s = strike.value();
-  auto setup = motionSetup(request, options, &s.table_contact, Ball{s.ball_mass, s.ball_radius});
+  auto setup = motionSetup(request, options, &s.table_contact, BallProperties{s.ball_mass, s.ball_radius});
   if (!setup)
     return setup.error();
   auto position = vector2(request, "ball_position");

@@ -18,7 +18,7 @@ using nlohmann::json;
 /// Everything but the start state: ball, table and motion parameters, and the sample spacing.
 struct MotionSetup
 {
-  Ball ball;
+  BallProperties ball;
   Table table;
   MotionParameters parameters;
   double spacing = 0.01;
@@ -27,7 +27,7 @@ struct MotionSetup
 /// The table ("table_file", "table"), the motion parameters and "sample_spacing" of a request; `cloth`, when
 /// given, is the cloth the strike used (the table's unless a table file overrides it).
 Expected<MotionSetup> motionSetup(const json& request, const SolverOptions& options, const SurfaceContact* cloth,
-                                  const Ball& ball);
+                                  const BallProperties& ball);
 /// object[key] as [x, y].
 Expected<Eigen::Vector2d> vector2(const json& object, const std::string& key);
 std::vector<double> toVector3(const Eigen::Vector3d& v);

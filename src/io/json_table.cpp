@@ -105,12 +105,10 @@ json ballJson(const std::string& id, const BallTrajectory& ball)
 }
 
 /// The id of the first ball the cue ball touches, or null.
-json firstContact(const TableTrajectory& run, std::size_t cue)
+json firstContactJson(const TableTrajectory& run, std::size_t cue)
 {
-  for (const MotionEvent& e : run.balls[cue].events)
-    if (e.type == MotionEventType::BallCollision && e.ball >= 0)
-      return run.ids[static_cast<std::size_t>(e.ball)];
-  return nullptr;
+  const std::string id = firstContact(run, cue);
+  return id.empty() ? json(nullptr) : json(id);
 }
 
 json tableJson(const TableTrajectory& run, std::size_t cue, const MotionSetup& setup, bool samples)
@@ -134,7 +132,7 @@ json tableJson(const TableTrajectory& run, std::size_t cue, const MotionSetup& s
     collisions.push_back({{"t", impact.time}, {"balls", ids}});
   }
   return json{{"balls", balls},
-              {"first_contact", firstContact(run, cue)},
+              {"first_contact", firstContactJson(run, cue)},
               {"pocketed", pocketed},
               {"collisions", collisions},
               {"duration", run.duration()}};
@@ -157,7 +155,7 @@ Expected<json> solveTableShot(const json& request, const SolverOptions& options)
   if (!strike)
     return strike.error();
   const CueStrike& s = strike.value();
-  auto setup = motionSetup(request, options, &s.table_contact, Ball{s.ball_mass, s.ball_radius});
+  auto setup = motionSetup(request, options, &s.table_contact, BallProperties{s.ball_mass, s.ball_radius});
   if (!setup)
     return setup.error();
   auto balls = tableBalls(request, s.ball_radius);

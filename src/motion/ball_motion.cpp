@@ -23,7 +23,7 @@ Status validate(const MotionParameters& p)
   return {};
 }
 
-Expected<BallTrajectory> predictTrajectory(const BallState& start, const Ball& ball, const Table& table,
+Expected<BallTrajectory> predictTrajectory(const BallState& start, const BallProperties& ball, const Table& table,
                                            const MotionParameters& parameters)
 {
   if (Status status = firstError({requirePositive(ball.mass, "ball_mass"), requirePositive(ball.radius, "ball_radius"),

@@ -36,7 +36,7 @@ Deadline deadlineAfter(double seconds)
          std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
 }
 
-Status checkStart(const BallState& start, const Ball& ball, const Table& table, const std::string& prefix)
+Status checkStart(const BallState& start, const BallProperties& ball, const Table& table, const std::string& prefix)
 {
   if (Status status =
           firstError({requireFinite(start.position, prefix + "position"), requireFinite(start.velocity, prefix + "v"),
@@ -58,7 +58,8 @@ Status checkStart(const BallState& start, const Ball& ball, const Table& table, 
   return {};
 }
 
-BallMover::BallMover(const Ball& ball, const Table& table, const MotionParameters& parameters, const Deadline& deadline)
+BallMover::BallMover(const BallProperties& ball, const Table& table, const MotionParameters& parameters,
+                     const Deadline& deadline)
     : ball_(ball), table_(table), p_(parameters), deadline_(deadline)
 {
 }

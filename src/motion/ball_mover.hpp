@@ -21,7 +21,8 @@ Deadline deadlineAfter(double seconds);
 
 /// Checks a ball's start: finite, plausible speeds, on the cloth, clear of the cushions and the pockets. The error
 /// names the field ("position", "v", "omega") after `prefix` ("balls[3].").
-Status checkStart(const BallState& start, const Ball& ball, const Table& table, const std::string& prefix = "");
+Status checkStart(const BallState& start, const BallProperties& ball, const Table& table,
+                  const std::string& prefix = "");
 
 class BallMover
 {
@@ -33,7 +34,8 @@ public:
     Ended,    ///< pocketed, off the table, pressed against a cushion or at the time limit
   };
 
-  BallMover(const Ball& ball, const Table& table, const MotionParameters& parameters, const Deadline& deadline);
+  BallMover(const BallProperties& ball, const Table& table, const MotionParameters& parameters,
+            const Deadline& deadline);
 
   /// The Start event at t = 0 and the first segment.
   void begin(BallState state);
@@ -72,7 +74,7 @@ private:
   bool pressedAgainst(int rail, bool on_cloth, double approach) const;
   void end(MotionEventType event, MotionOutcome outcome, double t, const BallState& state);
 
-  const Ball& ball_;
+  const BallProperties& ball_;
   const Table& table_;
   const MotionParameters& p_;
   const Deadline& deadline_;

@@ -16,7 +16,7 @@ double rollingDeceleration(const MotionParameters& p)
 
 /// Spin about z decays linearly on the cloth (docs/impact_model.md, Motion on the table); returns its angular
 /// deceleration and stop time.
-void addSpinDecay(PhaseMotion& motion, const BallState& state, const Ball& ball, const MotionParameters& p)
+void addSpinDecay(PhaseMotion& motion, const BallState& state, const BallProperties& ball, const MotionParameters& p)
 {
   const double w_z = state.angular_velocity.z();
   if (std::abs(w_z) <= REST_SPEED / ball.radius)
@@ -32,7 +32,7 @@ void addSpinDecay(PhaseMotion& motion, const BallState& state, const Ball& ball,
 }
 
 /// Time until z(τ) = R on the way down: z0 + v_z τ − ½gτ² = R.
-double flightTime(const BallState& state, const Ball& ball, double gravity)
+double flightTime(const BallState& state, const BallProperties& ball, double gravity)
 {
   const double v_z = state.velocity.z();
   const double height = std::max(state.position.z() - ball.radius, 0.0);
@@ -61,7 +61,8 @@ MotionPhase classify(const BallState& state, double radius)
   return MotionPhase::Stationary;
 }
 
-PhaseMotion phaseMotion(MotionPhase phase, const BallState& state, const Ball& ball, const MotionParameters& p)
+PhaseMotion phaseMotion(MotionPhase phase, const BallState& state, const BallProperties& ball,
+                        const MotionParameters& p)
 {
   PhaseMotion motion;
   switch (phase)

@@ -28,7 +28,8 @@ struct PhaseMotion
   MotionEventType end_event = MotionEventType::Rest;  ///< what happens then
 };
 
-PhaseMotion phaseMotion(MotionPhase phase, const BallState& state, const Ball& ball, const MotionParameters& p);
+PhaseMotion phaseMotion(MotionPhase phase, const BallState& state, const BallProperties& ball,
+                        const MotionParameters& p);
 
 /// The state at the natural end of a phase, with the quantity that reached zero set exactly to zero.
 BallState snapPhaseEnd(MotionEventType event, BallState state, double radius);

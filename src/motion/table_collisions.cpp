@@ -8,7 +8,7 @@ namespace detail
 {
 namespace
 {
-BallCollision collisionOf(const std::vector<BallState>& touching, const Ball& ball, const Table& table,
+BallCollision collisionOf(const std::vector<BallState>& touching, const BallProperties& ball, const Table& table,
                           const BallContactSettings& contact)
 {
   BallCollision collision;
@@ -25,7 +25,7 @@ BallCollision collisionOf(const std::vector<BallState>& touching, const Ball& ba
 }
 }  // namespace
 
-Expected<std::vector<BallState>> resolveBallImpact(const std::vector<BallState>& touching, const Ball& ball,
+Expected<std::vector<BallState>> resolveBallImpact(const std::vector<BallState>& touching, const BallProperties& ball,
                                                    const Table& table, const BallContactSettings& contact,
                                                    const SolverOptions& options)
 {

@@ -20,8 +20,8 @@ constexpr double NEVER = std::numeric_limits<double>::infinity();
 class TableSimulation
 {
 public:
-  TableSimulation(const std::vector<TableBall>& balls, const Ball& ball, const Table& table, const MotionParameters& p,
-                  const BallContactSettings& contact)
+  TableSimulation(const std::vector<TableBall>& balls, const BallProperties& ball, const Table& table,
+                  const MotionParameters& p, const BallContactSettings& contact)
       : ball_(ball), table_(table), p_(p), contact_(contact), deadline_(deadlineAfter(p.impact.max_seconds))
   {
     movers_.reserve(balls.size());
@@ -170,7 +170,7 @@ private:
     return options;
   }
 
-  const Ball& ball_;
+  const BallProperties& ball_;
   const Table& table_;
   const MotionParameters& p_;
   const BallContactSettings& contact_;
@@ -181,8 +181,9 @@ private:
 };
 }  // namespace
 
-Expected<TableTrajectory> runTableSimulation(const std::vector<TableBall>& balls, const Ball& ball, const Table& table,
-                                             const MotionParameters& parameters, const BallContactSettings& contact)
+Expected<TableTrajectory> runTableSimulation(const std::vector<TableBall>& balls, const BallProperties& ball,
+                                             const Table& table, const MotionParameters& parameters,
+                                             const BallContactSettings& contact)
 {
   return TableSimulation(balls, ball, table, parameters, contact).run();
 }

@@ -19,7 +19,7 @@ std::string ballField(std::size_t i)
   return "balls[" + std::to_string(i) + "]";
 }
 
-Status checkBalls(const std::vector<TableBall>& balls, const Ball& ball, const Table& table)
+Status checkBalls(const std::vector<TableBall>& balls, const BallProperties& ball, const Table& table)
 {
   if (balls.empty())
     return invalidArgument("balls", "at least one ball is needed");
@@ -61,8 +61,20 @@ double TableTrajectory::duration() const
   return last;
 }
 
-Expected<TableTrajectory> simulateTable(const std::vector<TableBall>& balls, const Ball& ball, const Table& table,
-                                        const MotionParameters& parameters, const BallContactSettings& contact)
+std::string firstContact(const TableTrajectory& trajectory, std::size_t ball)
+{
+  if (ball >= trajectory.balls.size())
+    return "";
+  for (const MotionEvent& e : trajectory.balls[ball].events)
+    if (e.type == MotionEventType::BallCollision && e.ball >= 0 &&
+        static_cast<std::size_t>(e.ball) < trajectory.ids.size())
+      return trajectory.ids[static_cast<std::size_t>(e.ball)];
+  return "";
+}
+
+Expected<TableTrajectory> simulateTable(const std::vector<TableBall>& balls, const BallProperties& ball,
+                                        const Table& table, const MotionParameters& parameters,
+                                        const BallContactSettings& contact)
 {
   if (Status status = firstError({requirePositive(ball.mass, "ball_mass"), requirePositive(ball.radius, "ball_radius"),
                                   validate(parameters), validate(table)});

@@ -50,6 +50,16 @@ Status readMotionChoices(const ros::NodeHandle& pnh, MotionParameters& motion)
   return {};
 }
 
+Status readBallContactChoices(const ros::NodeHandle& pnh, BallContactSettings& contact)
+{
+  std::string model = contact.friction_model == BallBallFriction::Alciatore ? "alciatore" : "constant";
+  pnh.param("ball_ball/friction_model", model, model);
+  if (model != "alciatore" && model != "constant")
+    return invalidArgument("ball_ball/friction_model", "must be \"alciatore\" or \"constant\", got \"" + model + "\"");
+  contact.friction_model = model == "alciatore" ? BallBallFriction::Alciatore : BallBallFriction::Constant;
+  return {};
+}
+
 Status checkNodeSettings(const NodeSettings& s)
 {
   if (s.target_frame.empty() || s.target_frame.front() == '/')
@@ -77,6 +87,8 @@ Expected<NodeSettings> readSettings(const ros::NodeHandle& pnh)
   if (Status status = readPockets(pnh, s.shot.table); !status)
     return status.error();
   if (Status status = readMotionChoices(pnh, s.shot.motion); !status)
+    return status.error();
+  if (Status status = readBallContactChoices(pnh, s.shot.ball_contact); !status)
     return status.error();
   if (Status status = firstError({checkNodeSettings(s), namedAsParameter(validate(s.shot))}); !status)
     return status.error();

@@ -41,36 +41,74 @@ void fillStrike(ShotPrediction& m, const CueStrikeResult& strike, const Eigen::V
   }
 }
 
-void fillTrajectory(ShotPrediction& m, const BallTrajectory& trajectory, double spacing)
+TrajectoryEvent eventMessage(const MotionEvent& e, const std::vector<std::string>& ids)
 {
-  m.outcome = toString(trajectory.outcome);
-  m.pocket = -1;
-  m.cushion_hits = 0;
-  for (const MotionEvent& e : trajectory.events)
-  {
-    TrajectoryEvent event;
-    event.type = toString(e.type);
-    event.time = e.time;
-    event.position = toPoint(e.state.position);
-    event.velocity = toVector3(e.state.velocity);
-    event.angular_velocity = toVector3(e.state.angular_velocity);
-    event.cushion = e.cushion;
-    event.pocket = e.pocket;
-    m.trajectory_events.push_back(event);
-    m.cushion_hits += e.type == MotionEventType::CushionHit;
-    if (e.type == MotionEventType::Pocketed)
-      m.pocket = e.pocket;
-  }
-  m.final_position = toPoint(trajectory.finalState().position);
-  m.duration = trajectory.duration();
+  TrajectoryEvent event;
+  event.type = toString(e.type);
+  event.time = e.time;
+  event.position = toPoint(e.state.position);
+  event.velocity = toVector3(e.state.velocity);
+  event.angular_velocity = toVector3(e.state.angular_velocity);
+  event.cushion = e.cushion;
+  event.pocket = e.pocket;
+  if (e.ball >= 0 && static_cast<std::size_t>(e.ball) < ids.size())
+    event.ball = ids[static_cast<std::size_t>(e.ball)];
+  return event;
+}
+
+std::vector<PathSample> pathMessage(const BallTrajectory& trajectory, double spacing)
+{
+  std::vector<PathSample> path;
   for (const TrajectorySample& s : trajectory.sample(spacing))
   {
     PathSample sample;
     sample.time = s.time;
     sample.position = toPoint(s.state.position);
     sample.phase = static_cast<uint8_t>(s.phase);  // the message constants follow MotionPhase's order
-    m.trajectory.push_back(sample);
+    path.push_back(sample);
   }
+  return path;
+}
+
+int pocketOf(const BallTrajectory& trajectory)
+{
+  for (const MotionEvent& e : trajectory.events)
+    if (e.type == MotionEventType::Pocketed)
+      return e.pocket;
+  return -1;
+}
+
+void fillTrajectory(ShotPrediction& m, const BallTrajectory& trajectory, const std::vector<std::string>& ids,
+                    double spacing)
+{
+  m.outcome = toString(trajectory.outcome);
+  m.pocket = pocketOf(trajectory);
+  m.cushion_hits = 0;
+  for (const MotionEvent& e : trajectory.events)
+  {
+    m.trajectory_events.push_back(eventMessage(e, ids));
+    m.cushion_hits += e.type == MotionEventType::CushionHit;
+  }
+  m.final_position = toPoint(trajectory.finalState().position);
+  m.duration = trajectory.duration();
+  m.trajectory = pathMessage(trajectory, spacing);
+}
+
+void fillTable(ShotPrediction& m, const TableTrajectory& table, double spacing)
+{
+  for (std::size_t i = 0; i < table.balls.size(); ++i)
+  {
+    BallPrediction ball;
+    ball.id = table.ids[i];
+    ball.outcome = toString(table.balls[i].outcome);
+    ball.pocket = pocketOf(table.balls[i]);
+    ball.final_position = toPoint(table.balls[i].finalState().position);
+    for (const MotionEvent& e : table.balls[i].events)
+      ball.events.push_back(eventMessage(e, table.ids));
+    ball.path = pathMessage(table.balls[i], spacing);
+    m.balls.push_back(ball);
+  }
+  m.first_contact = firstContact(table);
 }
 }  // namespace
 
@@ -79,7 +117,8 @@ ShotPrediction toMessage(const ShotOutcome& outcome, const std::string& frame, d
   ShotPrediction m;
   m.header.frame_id = frame;
   fillStrike(m, outcome.strike, outcome.hit_point);
-  fillTrajectory(m, outcome.trajectory, spacing);
+  fillTrajectory(m, outcome.trajectory, outcome.table.ids, spacing);
+  fillTable(m, outcome.table, spacing);
   return m;
 }
 

@@ -19,7 +19,31 @@ namespace
 /// A quaternion's norm may differ from 1 by this much (float round-off from other nodes), no more.
 constexpr double QUATERNION_NORM_TOLERANCE = 1e-3;
 
-Status checkRequest(const PredictShot::Request& r)
+bool hasCueBall(const TableState& table)
+{
+  for (const billiard_shot_planner::Ball& ball : table.balls)
+    if (ball.id == CUE_BALL_ID)
+      return true;
+  return false;
+}
+
+Status checkTable(const TableState& table)
+{
+  if (table.balls.size() > MAX_TABLE_BALLS)
+    return invalidArgument("table.balls", "at most " + std::to_string(MAX_TABLE_BALLS) + " balls, got " +
+                                              std::to_string(table.balls.size()));
+  if (!table.balls.empty() && table.header.frame_id.empty())
+    return invalidArgument("table.header.frame_id", "is empty: give the frame the balls are expressed in");
+  for (std::size_t i = 0; i < table.balls.size(); ++i)
+  {
+    const auto& p = table.balls[i].position;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      return invalidArgument("table.balls[" + std::to_string(i) + "].position", "contains NaN or infinite values");
+  }
+  return {};
+}
+
+Status checkRequest(const PredictShot::Request& r, bool cue_ball_in_table)
 {
   const auto& p = r.cue_pose.pose.position;
   const auto& q = r.cue_pose.pose.orientation;
@@ -33,12 +57,12 @@ Status checkRequest(const PredictShot::Request& r)
   if (!std::isfinite(r.cue_speed) || r.cue_speed <= 0.0)
     return invalidArgument("cue_speed", "must be > 0 m/s, got " + formatNumber(r.cue_speed));
   const auto& b = r.ball_position.point;
-  if (!std::isfinite(b.x) || !std::isfinite(b.y) || !std::isfinite(b.z))
+  if (!cue_ball_in_table && (!std::isfinite(b.x) || !std::isfinite(b.y) || !std::isfinite(b.z)))
     return invalidArgument("ball_position.point", "contains NaN or infinite values");
   // An empty frame can never be resolved: refused at once rather than after the whole tf timeout.
   if (r.cue_pose.header.frame_id.empty())
     return invalidArgument("cue_pose.header.frame_id", "is empty: give the frame the pose is expressed in");
-  if (r.ball_position.header.frame_id.empty())
+  if (!cue_ball_in_table && r.ball_position.header.frame_id.empty())
     return invalidArgument("ball_position.header.frame_id", "is empty: give the frame the point is expressed in");
   if (r.override_names.size() != r.override_values.size())
     return invalidArgument("override_values", "must have one value per name in override_names");
@@ -60,6 +84,7 @@ ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& pri
       tuning_mutex_, ros::NodeHandle(private_node, "tuning"));
   tuning_server_->updateConfig(toTuning(settings_.shot));
   tuning_server_->setCallback([this](ShotPredictorConfig& tuning, uint32_t level) { retune(tuning, level); });
+  table_subscriber_ = private_node.subscribe("table_state", 1, &ShotPredictorNode::storeTable, this);
   service_ = private_node.advertiseService("predict_shot", &ShotPredictorNode::predict, this);
   ROS_INFO("predict_shot ready: answers in frame '%s'", settings_.target_frame.c_str());
 }
@@ -96,7 +121,44 @@ Expected<ShotConfiguration> ShotPredictorNode::configurationFor(const PredictSho
   return configuration;
 }
 
-Expected<CuePlacement> ShotPredictorNode::placeCue(const PredictShot::Request& request) const
+void ShotPredictorNode::storeTable(const TableState::ConstPtr& table)
+{
+  std::lock_guard<std::mutex> lock(table_mutex_);
+  latest_table_ = *table;
+}
+
+TableState ShotPredictorNode::tableFor(const PredictShot::Request& request) const
+{
+  if (!request.table.balls.empty())
+    return request.table;
+  std::lock_guard<std::mutex> lock(table_mutex_);
+  return latest_table_;
+}
+
+Expected<std::vector<TableBall>> ShotPredictorNode::placeTable(const TableState& table) const
+{
+  std::vector<TableBall> balls;
+  for (std::size_t i = 0; i < table.balls.size(); ++i)
+  {
+    geometry_msgs::PointStamped point;
+    point.header = table.header;
+    point.point = table.balls[i].position;
+    try
+    {
+      point = buffer_.transform(point, settings_.target_frame, ros::Duration(settings_.tf_timeout));
+    }
+    catch (const tf2::TransformException& e)
+    {
+      return invalidArgument("table.header.frame_id", std::string("no transform to the table frame: ") + e.what());
+    }
+    TableBall ball{table.balls[i].id, {}};
+    ball.state.position = Eigen::Vector3d(point.point.x, point.point.y, 0.0);
+    balls.push_back(ball);
+  }
+  return balls;
+}
+
+Expected<CuePlacement> ShotPredictorNode::placeCue(const PredictShot::Request& request, bool cue_ball_in_table) const
 {
   const ros::Duration timeout(settings_.tf_timeout);
   geometry_msgs::PoseStamped pose;
@@ -111,7 +173,8 @@ Expected<CuePlacement> ShotPredictorNode::placeCue(const PredictShot::Request& r
   }
   try
   {
-    ball = buffer_.transform(request.ball_position, settings_.target_frame, timeout);
+    if (!cue_ball_in_table)
+      ball = buffer_.transform(request.ball_position, settings_.target_frame, timeout);
   }
   catch (const tf2::TransformException& e)
   {
@@ -136,15 +199,25 @@ bool ShotPredictorNode::predict(PredictShot::Request& request, PredictShot::Resp
     ROS_WARN("predict_shot: %s", response.message.c_str());
     return true;  // a domain error is an answer, not a failed call
   };
-  if (Status status = checkRequest(request); !status)
+  const TableState table = tableFor(request);
+  if (Status status = firstError({checkTable(table), checkRequest(request, hasCueBall(table))}); !status)
     return fail(status.error());
   auto configuration = configurationFor(request);
   if (!configuration)
     return fail(configuration.error());
-  auto cue = placeCue(request);
+  auto balls = placeTable(table);
+  if (!balls)
+    return fail(balls.error());
+  auto cue = placeCue(request, hasCueBall(table));
   if (!cue)
     return fail(cue.error());
-  auto outcome = predictShot(cue.value(), configuration.value());
+  std::vector<TableBall> others;
+  for (const TableBall& ball : balls.value())
+    if (ball.id == CUE_BALL_ID)
+      cue.value().ball = ball.state.position.head<2>();
+    else
+      others.push_back(ball);
+  auto outcome = predictShot(cue.value(), configuration.value(), others);
   if (!outcome)
     return fail(outcome.error());
   response.success = true;

@@ -2,6 +2,7 @@
 
 #include <billiard_shot_planner/PredictShot.h>
 #include <billiard_shot_planner/ShotPredictorConfig.h>
+#include <billiard_shot_planner/TableState.h>
 #include <dynamic_reconfigure/server.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
@@ -29,7 +30,14 @@ public:
 
 private:
   bool predict(PredictShot::Request& request, PredictShot::Response& response);
-  Expected<CuePlacement> placeCue(const PredictShot::Request& request) const;
+  /// The cue's pose and the cue ball's position in the table frame; the cue ball's position is left for the table
+  /// to give when it holds the cue ball.
+  Expected<CuePlacement> placeCue(const PredictShot::Request& request, bool cue_ball_in_table) const;
+  /// The request's table, or the latest one received on ~table_state when the request's is empty.
+  TableState tableFor(const PredictShot::Request& request) const;
+  /// The table's balls in the table frame (at rest on the cloth).
+  Expected<std::vector<TableBall>> placeTable(const TableState& table) const;
+  void storeTable(const TableState::ConstPtr& table);
   Expected<ShotConfiguration> configurationFor(const PredictShot::Request& request) const;
   /// A change through ~tuning: applied whole, or rejected whole with `tuning` reset to the node's configuration and
   /// the reason in tuning.rejected (the server answers the client with it).
@@ -45,6 +53,9 @@ private:
   ros::Publisher prediction_publisher_;
   ros::Publisher marker_publisher_;
   ros::ServiceServer service_;
+  ros::Subscriber table_subscriber_;
+  mutable std::mutex table_mutex_;  ///< guards latest_table_ against the subscriber's callback
+  TableState latest_table_;
 };
 
 }  // namespace billiard_shot_planner

@@ -102,6 +102,60 @@ Marker events(const ShotOutcome& outcome, const std::string& frame)
   return m;
 }
 
+/// A colour of its own for object ball k (k ≥ 1), distinct from the phase colours of the cue ball's path.
+std_msgs::ColorRGBA ballColour(std::size_t k)
+{
+  static const std_msgs::ColorRGBA PALETTE[] = {
+      rgba(1.0f, 0.85f, 0.0f), rgba(0.1f, 0.3f, 1.0f), rgba(1.0f, 0.1f, 0.1f),  rgba(0.55f, 0.0f, 0.8f),
+      rgba(1.0f, 0.45f, 0.0f), rgba(0.0f, 0.6f, 0.1f), rgba(0.6f, 0.25f, 0.1f), rgba(0.15f, 0.15f, 0.15f)};
+  return PALETTE[(k - 1) % (sizeof(PALETTE) / sizeof(PALETTE[0]))];
+}
+
+/// Object ball k's path (k ≥ 1: the cue ball's is drawn by phase), its start, its id and, when pocketed, a ring.
+void addObjectBall(visualization_msgs::MarkerArray& array, const ShotOutcome& outcome, std::size_t k,
+                   const std::string& frame, double spacing, double diameter, const MarkerStyle& style)
+{
+  const BallTrajectory& ball = outcome.table.balls[k];
+  const int id = static_cast<int>(k);
+  Marker line = marker(frame, "object_paths", id, Marker::LINE_STRIP);
+  line.scale.x = style.path_width;
+  line.color = ballColour(k);
+  for (const TrajectorySample& s : ball.sample(spacing))
+    line.points.push_back(toPoint(s.state.position));
+  while (line.points.size() < 2)  // a LINE_STRIP needs two points (a ball that never moves)
+    line.points.push_back(toPoint(ball.events.front().state.position));
+  array.markers.push_back(line);
+  Marker start = sphere(frame, "object_balls", ball.events.front().state.position, diameter, ballColour(k));
+  start.id = id;
+  array.markers.push_back(start);
+  Marker label = marker(frame, "object_ids", id, Marker::TEXT_VIEW_FACING);
+  label.pose.position = toPoint(ball.events.front().state.position + Eigen::Vector3d(0, 0, 2.0 * diameter));
+  label.scale.z = diameter;
+  label.color = rgba(1.0f, 1.0f, 1.0f);
+  label.text = outcome.table.ids[k];
+  array.markers.push_back(label);
+  if (ball.outcome == MotionOutcome::Pocketed)
+  {
+    Marker dropped =
+        sphere(frame, "pocketed", ball.finalState().position, 1.6 * diameter, rgba(1.0f, 0.0f, 0.0f, 0.4f));
+    dropped.id = id;
+    array.markers.push_back(dropped);
+  }
+}
+
+/// The ghost ball: where the cue ball is when it first touches another ball.
+void addGhostBall(visualization_msgs::MarkerArray& array, const ShotOutcome& outcome, const std::string& frame,
+                  double diameter)
+{
+  for (const MotionEvent& e : outcome.trajectory.events)
+    if (e.type == MotionEventType::BallCollision)
+    {
+      array.markers.push_back(
+          sphere(frame, "ghost_ball", outcome.trajectory.at(e.time).position, diameter, rgba(1.0f, 1.0f, 1.0f, 0.3f)));
+      return;
+    }
+}
+
 void addTable(visualization_msgs::MarkerArray& array, const Table& table, const std::string& frame)
 {
   Marker cloth = marker(frame, "table", 0, Marker::CUBE);
@@ -181,6 +235,9 @@ visualization_msgs::MarkerArray trajectoryMarkers(const ShotOutcome& outcome, co
   array.markers.push_back(sphere(frame, "hit_point", outcome.hit_point, 0.01, rgba(1.0f, 0.0f, 0.0f)));
   array.markers.push_back(cue(outcome, frame, style));
   array.markers.push_back(events(outcome, frame));
+  for (std::size_t k = 1; k < outcome.table.balls.size(); ++k)
+    addObjectBall(array, outcome, k, frame, sample_spacing, diameter, style);
+  addGhostBall(array, outcome, frame, diameter);
   addTable(array, configuration.table, frame);
   return array;
 }

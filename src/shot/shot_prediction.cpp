@@ -2,6 +2,8 @@
 #include "billiard_shot_planner/core/validation.hpp"
 
 #include <algorithm>
+#include <string>
+#include <utility>
 
 namespace billiard_shot_planner
 {
@@ -24,7 +26,9 @@ Status validate(const ShotConfiguration& c)
       firstError({requirePositive(c.cue_mass, "cue_mass"), requirePositiveOrInfinite(c.cue_end_mass, "cue_end_mass"),
                   requirePositive(c.ball_mass, "ball_mass"), requirePositive(c.ball_radius, "ball_radius"),
                   validate(c.cue_contact, "cue_contact"), requireStiffnessRatio(c.stiffness_ratio, "stiffness_ratio"),
-                  validate(c.table, "table"), inPart(validate(c.motion), "motion"), validate(c.solver, "solver")});
+                  validate(c.table, "table"), inPart(validate(c.motion), "motion"), validate(c.solver, "solver"),
+                  validate(c.ball_contact.ball_ball, "ball_ball"),
+                  requireStiffnessRatio(c.ball_contact.stiffness_ratio, "ball_ball.cloth_stiffness_ratio")});
   if (!status)
     return status;
   return validateCushionHeight(c.table.cushion_height, c.ball_radius, "table.cushion_height");
@@ -58,7 +62,11 @@ std::vector<NamedParameter> numericParameters(ShotConfiguration& c)
           {"motion.max_time", &c.motion.max_time},
           {"solver.relative_tolerance", &c.solver.relative_tolerance},
           {"solver.absolute_tolerance", &c.solver.absolute_tolerance},
-          {"solver.max_seconds", &c.solver.max_seconds}};
+          {"solver.max_seconds", &c.solver.max_seconds},
+          {"ball_ball.restitution", &c.ball_contact.ball_ball.restitution},
+          {"ball_ball.friction", &c.ball_contact.ball_ball.friction},
+          {"ball_ball.eta2", &c.ball_contact.ball_ball.eta2},
+          {"ball_ball.cloth_stiffness_ratio", &c.ball_contact.stiffness_ratio}};
 }
 
 Status applyOverride(ShotConfiguration& configuration, const std::string& name, double value)
@@ -77,7 +85,49 @@ Status applyOverride(ShotConfiguration& configuration, const std::string& name, 
   return invalidArgument(name, "is not a physical parameter that can be overridden");
 }
 
-Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfiguration& c)
+namespace
+{
+/// A table error in the request's names: the cue ball (balls[0]) is "ball_position", the others "table.balls[k]".
+Error inRequestTerms(Error error)
+{
+  const std::string cue = "balls[0].";
+  if (error.field.rfind(cue, 0) == 0)
+    error.field = error.field == cue + "position" ? "ball_position" : "cue ball " + error.field.substr(cue.size());
+  else if (error.field.rfind("balls[", 0) == 0)
+  {
+    const std::size_t close = error.field.find(']');
+    const int index = std::stoi(error.field.substr(6, close - 6)) - 1;
+    error.field = "table.balls[" + std::to_string(index) + "]" + error.field.substr(close + 1);
+  }
+  return error;
+}
+
+Expected<TableTrajectory> moveBalls(const BallState& cue_ball, const std::vector<TableBall>& others,
+                                    const ShotConfiguration& c, const MotionParameters& motion)
+{
+  const BallProperties ball{c.ball_mass, c.ball_radius};
+  if (others.empty())
+  {
+    // The lone ball: its own checks name its fields as a lone ball's.
+    auto trajectory = predictTrajectory(cue_ball, ball, c.table, motion);
+    if (!trajectory)
+      return trajectory.error();
+    TableTrajectory table;
+    table.ids = {CUE_BALL_ID};
+    table.balls.push_back(std::move(trajectory).value());
+    return table;
+  }
+  std::vector<TableBall> balls{{CUE_BALL_ID, cue_ball}};
+  balls.insert(balls.end(), others.begin(), others.end());
+  auto table = simulateTable(balls, ball, c.table, motion, c.ball_contact);
+  if (!table)
+    return inRequestTerms(table.error());
+  return table;
+}
+}  // namespace
+
+Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfiguration& c,
+                                  const std::vector<TableBall>& others)
 {
   if (Status status = firstError(
           {requireFinite(cue.tip, "cue_pose.position"), requireDirection(cue.direction, "cue_pose.orientation"),
@@ -108,15 +158,17 @@ Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfigurati
   start.angular_velocity = struck.value().angular_velocity;
   MotionParameters motion = c.motion;
   motion.impact = c.solver;
-  auto trajectory = predictTrajectory(start, Ball{c.ball_mass, c.ball_radius}, c.table, motion);
-  if (!trajectory)
+  auto table = moveBalls(start, others, c, motion);
+  if (!table)
   {
-    Error error = trajectory.error();
+    Error error = table.error();
     if (error.field == "position")
       error.field = "ball_position";  // the start of the trajectory is where the request put the ball
     return error;
   }
-  return ShotOutcome{std::move(struck).value(), std::move(trajectory).value(), centre + c.ball_radius * normal.value()};
+  BallTrajectory cue_ball = table.value().balls.front();
+  return ShotOutcome{std::move(struck).value(), std::move(cue_ball), centre + c.ball_radius * normal.value(),
+                     std::move(table).value()};
 }
 
 }  // namespace billiard_shot_planner

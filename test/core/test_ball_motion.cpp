@@ -39,7 +39,7 @@ bsp::BallState stateOf(Eigen::Vector3d v, Eigen::Vector3d w, Eigen::Vector2d xy 
 bsp::BallTrajectory predicted(const bsp::BallState& start, const bsp::Table& table, bsp::MotionParameters p = {},
                               double radius = 0.0286)
 {
-  auto result = bsp::predictTrajectory(start, bsp::Ball{0.17, radius}, table, p);
+  auto result = bsp::predictTrajectory(start, bsp::BallProperties{0.17, radius}, table, p);
   EXPECT_TRUE(result.ok()) << (result.ok() ? "" : result.error().describe());
   return result.value();
 }
@@ -486,7 +486,7 @@ TEST(Cushion, RandomShotsAlongARailNeverEnterTheCushion)
     start.position << 0.9 * u(rng), 0.635 - 0.0286 - 0.02 * (1.0 + u(rng)), 0.0286;
     start.velocity << 1.5 * u(rng), 0.3 * u(rng), 0.0;
     start.angular_velocity << 100 * u(rng), 100 * u(rng), 50 * u(rng);
-    auto t = bsp::predictTrajectory(start, bsp::Ball{}, table);
+    auto t = bsp::predictTrajectory(start, bsp::BallProperties{}, table);
     if (!t.ok())
     {
       EXPECT_EQ(t.error().field, "position") << k;  // a start inside the side pocket's capture region
@@ -735,7 +735,7 @@ TEST(Pocket, StraightAtACornerIsPocketedBesideItIsNot)
 TEST(BallMotionBadInput, NamedErrors)
 {
   bsp::Table table;
-  const bsp::Ball ball;
+  const bsp::BallProperties ball;
   auto error = [&](const bsp::BallState& s, const bsp::MotionParameters& p = {})
   { return bsp::predictTrajectory(s, ball, table, p).error(); };
   EXPECT_EQ(error(stateOf({1, 0, 0}, {0, 0, 0}, {2.0, 0.0})).field, "position");   // off the table

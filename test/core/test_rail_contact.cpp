@@ -78,7 +78,7 @@ bsp::BallState touching(const bsp::Table& table, int rail, double gap, double al
 
 bsp::BallTrajectory predicted(const bsp::BallState& start, const bsp::Table& table, const bsp::MotionParameters& p = {})
 {
-  auto result = bsp::predictTrajectory(start, bsp::Ball{0.17, R}, table, p);
+  auto result = bsp::predictTrajectory(start, bsp::BallProperties{0.17, R}, table, p);
   EXPECT_TRUE(result.ok()) << (result.ok() ? "" : result.error().describe());
   return result.ok() ? result.value() : bsp::BallTrajectory{};
 }
@@ -224,7 +224,7 @@ TEST(RailContact, RandomBallsTouchingARailNeverCrossIt)
     const Eigen::Vector3d v(speed * std::cos(heading), speed * std::sin(heading), k % 3 == 0 ? 1.5 * unit(rng) : 0.0);
     const Eigen::Vector3d w(80.0 * u(rng), 80.0 * u(rng), 50.0 * u(rng));
     const bsp::BallState start = touching(table, rail, gap, along, v, w);
-    const auto result = bsp::predictTrajectory(start, bsp::Ball{0.17, R}, table, p);
+    const auto result = bsp::predictTrajectory(start, bsp::BallProperties{0.17, R}, table, p);
     if (!result.ok())
     {
       EXPECT_EQ(result.error().field, "position") << k;  // a start inside a pocket's capture region
@@ -360,12 +360,12 @@ TEST(CushionHeight, ANoseTooLowToTurnBackABallRollingIntoItIsRefused)
   for (const double h : {0.0001, bsp::MIN_CUSHION_HEIGHT * R * (1.0 - 1e-12)})
   {
     table.cushion_height = h;
-    const auto result = bsp::predictTrajectory(start, bsp::Ball{0.17, R}, table, planar);
+    const auto result = bsp::predictTrajectory(start, bsp::BallProperties{0.17, R}, table, planar);
     ASSERT_FALSE(result.ok()) << h;
     EXPECT_EQ(result.error().field, "table.cushion_height");
   }
   table.cushion_height = bsp::MIN_CUSHION_HEIGHT * R;
-  EXPECT_TRUE(bsp::predictTrajectory(start, bsp::Ball{0.17, R}, table, planar).ok());
+  EXPECT_TRUE(bsp::predictTrajectory(start, bsp::BallProperties{0.17, R}, table, planar).ok());
   bsp::ShotConfiguration configuration;
   configuration.table.cushion_height = 0.0001;
   ASSERT_FALSE(bsp::validate(configuration).ok());

@@ -50,7 +50,7 @@ void expectSameTrajectory(const bsp::BallTrajectory& a, const bsp::BallTrajector
 TEST(TableSimulation, BallsThatNeverMeetMoveAsEachAlone)
 {
   const bsp::Table table;
-  const bsp::Ball ball;
+  const bsp::BallProperties ball;
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int k = 0; k < 200; ++k)
@@ -74,7 +74,7 @@ TEST(TableSimulation, BallsThatNeverMeetMoveAsEachAlone)
 TEST(TableSimulation, ALoneBallIsTheOneBallCaseOfTheTable)
 {
   const bsp::Table table;
-  const bsp::Ball ball;
+  const bsp::BallProperties ball;
   const bsp::BallState start = at(-0.6, 0.1, {1.5, 0.7, 0.0}, {-20.0, 40.0, 15.0});
   const auto alone = bsp::predictTrajectory(start, ball, table);
   const auto table_run = bsp::simulateTable({{"cue", start}}, ball, table);
@@ -86,7 +86,7 @@ TEST(TableSimulation, ALoneBallIsTheOneBallCaseOfTheTable)
 TEST(TableSimulation, BadTablesAreRefusedNamingTheBall)
 {
   const bsp::Table table;
-  const bsp::Ball ball;
+  const bsp::BallProperties ball;
   auto fieldOf = [&](const std::vector<bsp::TableBall>& balls)
   {
     auto r = bsp::simulateTable(balls, ball, table);
@@ -112,7 +112,7 @@ namespace
 const double G = 9.81, MU_S = 0.152479;
 
 /// Kinetic and potential energy of every ball still on the table at time t (J; potential from the cloth).
-double tableEnergy(const bsp::TableTrajectory& run, const bsp::Ball& ball, double t)
+double tableEnergy(const bsp::TableTrajectory& run, const bsp::BallProperties& ball, double t)
 {
   double energy = 0.0;
   for (const bsp::BallTrajectory& b : run.balls)
@@ -133,7 +133,7 @@ bool onTable(const bsp::BallTrajectory& b, double t)
 }
 
 /// The deepest overlap of two balls on the table over [0, duration], sampled every `step` seconds (m; ≤ 0 none).
-double deepestOverlap(const bsp::TableTrajectory& run, const bsp::Ball& ball, double step)
+double deepestOverlap(const bsp::TableTrajectory& run, const bsp::BallProperties& ball, double step)
 {
   double deepest = 0.0;
   for (double t = 0.0; t <= run.duration(); t += step)
@@ -155,7 +155,7 @@ double deepestOverlap(const bsp::TableTrajectory& run, const bsp::Ball& ball, do
 TEST(TableSimulation, AStunShotMeetsTheObjectBallWhenTheGapIsCovered)
 {
   const bsp::Table table;
-  const bsp::Ball ball;
+  const bsp::BallProperties ball;
   const double V = 2.0, gap = 0.01;
   const auto run =
       bsp::simulateTable({{"cue", at(-0.4, 0.0, {V, 0, 0})}, {"one", at(-0.4 + 2 * R + gap, 0.0)}}, ball, table);
@@ -180,7 +180,7 @@ TEST(TableSimulation, AStunShotMeetsTheObjectBallWhenTheGapIsCovered)
 TEST(TableSimulation, RandomShotsMissNoCollisionAndNeverGainEnergy)
 {
   const bsp::Table table;
-  const bsp::Ball ball;
+  const bsp::BallProperties ball;
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   const int shots = std::getenv("TABLE_SHOTS") ? std::atoi(std::getenv("TABLE_SHOTS")) : 200;
@@ -224,7 +224,7 @@ TEST(TableSimulation, RandomShotsMissNoCollisionAndNeverGainEnergy)
 TEST(TableSimulation, TheBreakEndsWithEveryBallAtRestOrGone)
 {
   const bsp::Table table;
-  const bsp::Ball ball;
+  const bsp::BallProperties ball;
   std::vector<bsp::TableBall> balls{{"cue", at(-0.25 * table.length, 0.01, {8.0, 0, 0})}};
   for (int row = 0; row < 5; ++row)
     for (int k = 0; k <= row; ++k)

@@ -83,3 +83,32 @@ TEST(TrajectoryMarkers, PathColouredByPhase)
       EXPECT_NEAR(m.points[1].x - m.points[0].x, 0.1 * -2.0733, 1e-3);
     }
 }
+
+// A table: every object ball gets its path (two points at least), its start, its id as a label, and the ghost ball
+// marks where the cue ball first touched another ball; the rules above hold for them too.
+TEST(TrajectoryMarkers, EveryBallOfTheTableIsDrawnWithItsId)
+{
+  const bsp::ShotConfiguration configuration;
+  bsp::CuePlacement cue = shot_fixtures::follow();
+  bsp::TableBall one{"one", {}}, two{"two", {}};
+  one.state.position << cue.ball.x() + 0.3, cue.ball.y(), 0.0;
+  two.state.position << cue.ball.x(), cue.ball.y() + 0.4, 0.0;  // off the line: never touched
+  const auto outcome = bsp::predictShot(cue, configuration, {one, two});
+  ASSERT_TRUE(outcome.ok()) << outcome.error().describe();
+  const auto array = bsp::trajectoryMarkers(outcome.value(), configuration, "table", 0.01);
+  std::map<std::string, std::set<int>> ids;
+  std::set<std::string> labels;
+  for (std::size_t i = 1; i < array.markers.size(); ++i)
+  {
+    const Marker& m = array.markers[i];
+    EXPECT_TRUE(ids[m.ns].insert(m.id).second) << m.ns << " " << m.id;
+    if (m.type == Marker::LINE_STRIP)
+      EXPECT_GE(m.points.size(), 2u) << m.ns;
+    if (m.ns == "object_ids")
+      labels.insert(m.text);
+  }
+  EXPECT_EQ(ids["object_paths"].size(), 2u);
+  EXPECT_EQ(ids["object_balls"].size(), 2u);
+  EXPECT_EQ(labels, (std::set<std::string>{"one", "two"}));
+  EXPECT_EQ(ids["ghost_ball"].size(), 1u);
+}

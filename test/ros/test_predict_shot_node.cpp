@@ -2,6 +2,7 @@
 // input is answered with success = false and a reason, markers are latched arrays that replace each other, and
 // concurrent callers are all served.
 #include <billiard_shot_planner/PredictShot.h>
+#include <billiard_shot_planner/TableState.h>
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <gtest/gtest.h>
 
@@ -420,4 +421,104 @@ int main(int argc, char** argv)
   ros::init(argc, argv, "test_predict_shot_node");
   ros::NodeHandle nh;
   return RUN_ALL_TESTS();
+}
+
+namespace
+{
+/// The follow shot with an object ball "one" 0.3 m ahead of the cue ball on its line, in the table frame.
+bsp::PredictShot::Request followWithObjectBall()
+{
+  auto request = toRequest(shot_fixtures::follow());
+  request.table.header.frame_id = "table";
+  bsp::Ball one;
+  one.id = "one";
+  one.position.x = shot_fixtures::follow().ball.x() + 0.3;
+  one.position.y = shot_fixtures::follow().ball.y();
+  request.table.balls.push_back(one);
+  return request;
+}
+}  // namespace
+
+// Every ball of the table is predicted, as the core library predicts it; the frame of the table does not matter.
+TEST_F(PredictShotNode, TheTableIsPredictedBallByBall)
+{
+  const auto request = followWithObjectBall();
+  const auto response = call(request);
+  ASSERT_TRUE(response.success) << response.message;
+  ASSERT_EQ(response.prediction.balls.size(), 2u);
+  EXPECT_EQ(response.prediction.balls[0].id, "cue");
+  EXPECT_EQ(response.prediction.balls[1].id, "one");
+  EXPECT_EQ(response.prediction.first_contact, "one");
+  bsp::CuePlacement cue = shot_fixtures::follow();
+  const auto& o = request.cue_pose.pose.orientation;
+  cue.direction = Eigen::Quaterniond(o.w, o.x, o.y, o.z).normalized() * Eigen::Vector3d::UnitX();
+  bsp::TableBall one{"one", {}};
+  one.state.position << request.table.balls[0].position.x, request.table.balls[0].position.y, 0.0;
+  const auto expected = bsp::predictShot(cue, bsp::ShotConfiguration{}, {one}).value();
+  const auto& final_one = response.prediction.balls[1].final_position;
+  EXPECT_NEAR(final_one.x, expected.table.balls[1].finalState().position.x(), 1e-9);
+  EXPECT_NEAR(final_one.y, expected.table.balls[1].finalState().position.y(), 1e-9);
+  EXPECT_GT(final_one.x, one.state.position.x());  // struck forward
+  EXPECT_FALSE(response.prediction.balls[1].path.empty());
+
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  auto rotated = request;
+  geometry_msgs::PointStamped point;
+  point.header = request.table.header;
+  point.point = request.table.balls[0].position;
+  rotated.table.header.frame_id = "rotated";
+  rotated.table.balls[0].position = buffer.transform(point, "rotated", ros::Duration(5.0)).point;
+  const auto again = call(rotated);
+  ASSERT_TRUE(again.success) << again.message;
+  EXPECT_NEAR(again.prediction.balls[1].final_position.x, final_one.x, 1e-6);
+  EXPECT_NEAR(again.prediction.balls[1].final_position.y, final_one.y, 1e-6);
+}
+
+TEST_F(PredictShotNode, BadTablesAreAnsweredWithAReason)
+{
+  auto duplicate = followWithObjectBall();
+  duplicate.table.balls.push_back(duplicate.table.balls[0]);
+  duplicate.table.balls[1].position.x += 0.2;
+  auto no_frame = followWithObjectBall();
+  no_frame.table.header.frame_id = "";
+  auto not_finite = followWithObjectBall();
+  not_finite.table.balls[0].position.y = std::numeric_limits<double>::quiet_NaN();
+  auto overlap = followWithObjectBall();
+  overlap.table.balls[0].position.x = shot_fixtures::follow().ball.x() + 0.03;
+  for (const auto& [request, field] :
+       {std::pair{duplicate, "table.balls[1].id"}, std::pair{no_frame, "table.header.frame_id"},
+        std::pair{not_finite, "table.balls[0].position"}, std::pair{overlap, "table.balls[0].position"}})
+  {
+    const auto response = call(request);
+    EXPECT_FALSE(response.success) << field;
+    EXPECT_NE(response.message.find(field), std::string::npos) << response.message;
+  }
+}
+
+// A request without a table uses the latest TableState received on ~table_state.
+TEST_F(PredictShotNode, TheLatestTableStateIsUsedWhenTheRequestHasNone)
+{
+  ros::NodeHandle node;
+  ros::Publisher publisher = node.advertise<bsp::TableState>("/shot_predictor/table_state", 1, true);
+  const auto with_table = followWithObjectBall();
+  publisher.publish(with_table.table);
+  auto without = with_table;
+  without.table = bsp::TableState{};
+  bool used = false;
+  for (int attempt = 0; attempt < 50 && !used; ++attempt)
+  {
+    ros::Duration(0.1).sleep();
+    const auto response = call(without);
+    used = response.success && response.prediction.balls.size() == 2;
+  }
+  EXPECT_TRUE(used);
+  publisher.publish(bsp::TableState{});  // the other tests predict the cue ball alone
+  for (int attempt = 0; attempt < 50; ++attempt)
+  {
+    ros::Duration(0.1).sleep();
+    if (call(without).prediction.balls.size() == 1)
+      break;
+  }
+  EXPECT_EQ(call(without).prediction.balls.size(), 1u);
 }

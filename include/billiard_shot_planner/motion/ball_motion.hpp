@@ -35,7 +35,8 @@ struct MotionParameters
   SolverOptions impact;  ///< for the landings and cushion impacts
 };
 
-struct Ball
+/// A ball's mass and radius (the message Ball of the ROS interface is a ball on the table: id and position).
+struct BallProperties
 {
   double mass = 0.17;      ///< kg
   double radius = 0.0286;  ///< m
@@ -45,7 +46,7 @@ struct Ball
 /// phases and exact event times; landings and cushion hits are solved by the multiple-impact engine. The start
 /// position's z is ignored when the ball is on the cloth (it is set to the radius).
 /// Errors: InvalidArgument naming the field (ball off the table or overlapping a cushion, bad friction, …).
-Expected<BallTrajectory> predictTrajectory(const BallState& start, const Ball& ball, const Table& table,
+Expected<BallTrajectory> predictTrajectory(const BallState& start, const BallProperties& ball, const Table& table,
                                            const MotionParameters& parameters = {});
 
 Status validate(const MotionParameters& parameters);

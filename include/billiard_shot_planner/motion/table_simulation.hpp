@@ -39,6 +39,9 @@ struct TableTrajectory
   double duration() const;
 };
 
+/// The id of the first ball that ball `ball` (by index) touches, or "" when it touches none.
+std::string firstContact(const TableTrajectory& trajectory, std::size_t ball = 0);
+
 /// How balls meet (scenarios/ball_collision.hpp): the ball–ball contact, and the cloth's stiffness relative to it.
 /// The cloth's own law is the table's.
 struct BallContactSettings
@@ -56,8 +59,8 @@ struct BallContactSettings
 /// event change their phase. One ball is predictTrajectory's case.
 /// Errors name the ball ("balls[2].position"): no ball, more than MAX_TABLE_BALLS, an empty or repeated id,
 /// overlapping balls, a ball off the cloth, in a pocket or overlapping a cushion, non-finite values.
-Expected<TableTrajectory> simulateTable(const std::vector<TableBall>& balls, const Ball& ball, const Table& table,
-                                        const MotionParameters& parameters = {},
+Expected<TableTrajectory> simulateTable(const std::vector<TableBall>& balls, const BallProperties& ball,
+                                        const Table& table, const MotionParameters& parameters = {},
                                         const BallContactSettings& contact = {});
 
 }  // namespace billiard_shot_planner

@@ -6,6 +6,7 @@
 
 #include "billiard_shot_planner/core/expected.hpp"
 #include "billiard_shot_planner/motion/ball_motion.hpp"
+#include "billiard_shot_planner/motion/table_simulation.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 
 namespace billiard_shot_planner
@@ -23,6 +24,7 @@ struct ShotConfiguration
   SurfaceContact cue_contact{0.656532, 0.7, 1.2};  ///< cue tip on ball: e, μ, η² (Mindlin's η² for a soft tip)
   double stiffness_ratio = 0.8;                    ///< k_cloth / k_cue
   Table table;                                     ///< includes the cloth contact (e, μ, η²) of the strike
+  BallContactSettings ball_contact;                ///< how balls meet (e, μ or Alciatore's μ(v), η², k_cloth/k)
   MotionParameters motion;
   SolverOptions solver;
 };
@@ -57,15 +59,24 @@ struct CuePlacement
   Eigen::Vector2d ball = Eigen::Vector2d::Zero();        ///< the ball's centre in the table plane
 };
 
+/// The id of the cue ball among the balls of a shot's table.
+inline const char* const CUE_BALL_ID = "cue";
+
 struct ShotOutcome
 {
   CueStrikeResult strike;
-  BallTrajectory trajectory;
+  BallTrajectory trajectory;  ///< the cue ball's
   Eigen::Vector3d hit_point;  ///< table frame
+  /// Every ball's path: the cue ball first (id CUE_BALL_ID), then the other balls in the order given. On an empty
+  /// table, the cue ball alone.
+  TableTrajectory table;
 };
 
 /// The whole prediction: the hit point where the cue axis meets the ball, the strike by the multiple-impact
-/// engine, and the path on the table. Pure function, thread-safe.
-Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfiguration& configuration);
+/// engine, and the path of every ball on the table (`others`: the balls besides the cue ball, at rest or moving;
+/// none may be called CUE_BALL_ID). Pure function, thread-safe. Errors name the cue ball's fields as the request's
+/// ("ball_position") and the other balls as "table.balls[k]".
+Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfiguration& configuration,
+                                  const std::vector<TableBall>& others = {});
 
 }  // namespace billiard_shot_planner
