@@ -103,7 +103,9 @@ TEST(TrajectoryMarkers, EveryBallOfTheTableIsDrawnWithItsId)
     const Marker& m = array.markers[i];
     EXPECT_TRUE(ids[m.ns].insert(m.id).second) << m.ns << " " << m.id;
     if (m.type == Marker::LINE_STRIP)
+    {
       EXPECT_GE(m.points.size(), 2u) << m.ns;
+    }
     if (m.ns == "object_ids")
       labels.insert(m.text);
   }
