@@ -7,6 +7,10 @@ export PATH="/usr/bin:/bin:/usr/sbin:/sbin:${PATH}"
 
 REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-${REPO_ROOT}/build}"
+# The install space scripts/test_install makes and removes: outside the repository, which is the package's own
+# directory (roslaunch and rosrun search it whole, and would find a second copy of every launch file in it), and one
+# per build directory.
+INSTALL_PREFIX="${INSTALL_PREFIX:-${TMPDIR:-/tmp}/billiard_shot_planner-install-$(printf '%s' "$BUILD_DIR" | md5sum | cut -c1-8)}"
 
 # Every Debian package the build, tests, demo, benchmarks and fuzzing use (there is no rosdep on these machines).
 PACKAGES=(
@@ -46,10 +50,8 @@ configure_and_build() {
   # catkin's cached test environment puts the devel space's Python path on PYTHONPATH only if it exists at
   # configure time; on a fresh clone the generated message modules land there after the first build.
   mkdir -p "${BUILD_DIR}/devel/lib/python3/dist-packages"
-  # The install space is build/install (scripts/test_install checks it); cmake --install build --prefix <dir>
-  # installs elsewhere.
   cmake -S "$REPO_ROOT" -B "$BUILD_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_INSTALL_PREFIX="${BUILD_DIR}/install" "$@" >/dev/null
+    -DCMAKE_INSTALL_PREFIX="$INSTALL_PREFIX" "$@" >/dev/null
   log "Building"
   make -C "$BUILD_DIR" -j"$(nproc)" --no-print-directory
 }
