@@ -105,10 +105,10 @@ Marker events(const ShotOutcome& outcome, const std::string& frame)
 /// A colour of its own for object ball k (k ≥ 1), distinct from the phase colours of the cue ball's path.
 std_msgs::ColorRGBA ballColour(std::size_t k)
 {
-  static const std_msgs::ColorRGBA PALETTE[] = {
+  static const std_msgs::ColorRGBA palette[] = {
       rgba(1.0f, 0.85f, 0.0f), rgba(0.1f, 0.3f, 1.0f), rgba(1.0f, 0.1f, 0.1f),  rgba(0.55f, 0.0f, 0.8f),
       rgba(1.0f, 0.45f, 0.0f), rgba(0.0f, 0.6f, 0.1f), rgba(0.6f, 0.25f, 0.1f), rgba(0.15f, 0.15f, 0.15f)};
-  return PALETTE[(k - 1) % (sizeof(PALETTE) / sizeof(PALETTE[0]))];
+  return palette[(k - 1) % (sizeof(palette) / sizeof(palette[0]))];
 }
 
 /// Object ball k's path (k ≥ 1: the cue ball's is drawn by phase), its start, its id and, when pocketed, a ring.
