@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <random>
 #include <string>
@@ -183,8 +184,9 @@ TEST(TableSimulation, RandomShotsMissNoCollisionAndNeverGainEnergy)
   const bsp::BallProperties ball;
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const int shots = std::getenv("TABLE_SHOTS") ? std::atoi(std::getenv("TABLE_SHOTS")) : 200;
+  const int shots = std::getenv("TABLE_SHOTS") ? std::atoi(std::getenv("TABLE_SHOTS")) : 1000;
   int impacts = 0;
+  double deepest = 0.0;
   for (int k = 0; k < shots; ++k)
   {
     std::vector<bsp::TableBall> balls;
@@ -207,7 +209,9 @@ TEST(TableSimulation, RandomShotsMissNoCollisionAndNeverGainEnergy)
     const auto run = bsp::simulateTable(balls, ball, table);
     ASSERT_TRUE(run.ok()) << "shot " << k << ": " << run.error().describe();
     impacts += static_cast<int>(run.value().ball_impacts.size());
-    EXPECT_LT(deepestOverlap(run.value(), ball, 5e-4), 1e-9) << "shot " << k;
+    const double overlap = deepestOverlap(run.value(), ball, 5e-4);
+    deepest = std::max(deepest, overlap);
+    EXPECT_LT(overlap, 1e-9) << "shot " << k;
     double before = tableEnergy(run.value(), ball, 0.0);
     for (double t = 1e-3; t <= run.value().duration(); t += 1e-3)
     {
@@ -217,6 +221,8 @@ TEST(TableSimulation, RandomShotsMissNoCollisionAndNeverGainEnergy)
     }
   }
   EXPECT_GT(impacts, shots / 2);  // the shots do hit balls
+  std::printf("%d random shots, %d ball impacts, deepest overlap found by the 0.5 ms search %.3g m\n", shots, impacts,
+              deepest);
 }
 
 // The break: a racked pack of 15 touching balls hit by the cue ball from the head string at 8 m/s is one multiple
