@@ -8,6 +8,7 @@
 #include "billiard_shot_planner/scenarios/ball_chain.hpp"
 #include "billiard_shot_planner/scenarios/ball_collision.hpp"
 #include "json_fields.hpp"
+#include "json_motion.hpp"
 
 namespace billiard_shot_planner
 {
@@ -111,18 +112,10 @@ Expected<CollidingBall> collidingBall(const json& fields, const std::string& pre
 {
   if (!fields.is_object())
     return invalidArgument(prefix, "must be an object {\"position\": [x, y], \"v\": [x, y, z], \"omega\": [x, y, z]}");
-  auto position = numbers(fields, "position");
-  if (!position)
-    return nested(prefix, position.error());
-  if (position.value().size() != 2)
-    return invalidArgument(prefix + ".position", "must be [x, y]");
-  auto velocity = vector3(fields, "v", Eigen::Vector3d::Zero());
-  if (!velocity)
-    return nested(prefix, velocity.error());
-  auto spin = vector3(fields, "omega", Eigen::Vector3d::Zero());
-  if (!spin)
-    return nested(prefix, spin.error());
-  return CollidingBall{{position.value()[0], position.value()[1]}, velocity.value(), spin.value()};
+  auto state = ballOnCloth(fields, prefix, 0.0);
+  if (!state)
+    return state.error();
+  return CollidingBall{state.value().position.head<2>(), state.value().velocity, state.value().angular_velocity};
 }
 
 Status readBalls(const json& request, BallCollision& collision)

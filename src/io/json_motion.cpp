@@ -25,6 +25,24 @@ Expected<Eigen::Vector2d> vector2(const json& object, const std::string& key)
   return Eigen::Vector2d(values.value()[0], values.value()[1]);
 }
 
+Expected<BallState> ballOnCloth(const json& fields, const std::string& prefix, double radius)
+{
+  auto position = vector2(fields, "position");
+  if (!position)
+    return nested(prefix, position.error());
+  auto velocity = vector3(fields, "v", Eigen::Vector3d::Zero());
+  if (!velocity)
+    return nested(prefix, velocity.error());
+  auto spin = vector3(fields, "omega", Eigen::Vector3d::Zero());
+  if (!spin)
+    return nested(prefix, spin.error());
+  BallState state;
+  state.position << position.value(), radius;
+  state.velocity = velocity.value();
+  state.angular_velocity = spin.value();
+  return state;
+}
+
 namespace
 {
 Expected<std::vector<Pocket>> pockets(const json& table)

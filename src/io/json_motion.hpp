@@ -3,6 +3,7 @@
 // The motion parts of impact_solve's JSON, shared by ball_motion, shot and table_shot (json_motion.cpp).
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "billiard_shot_planner/core/expected.hpp"
@@ -30,6 +31,9 @@ Expected<MotionSetup> motionSetup(const json& request, const SolverOptions& opti
                                   const BallProperties& ball);
 /// object[key] as [x, y].
 Expected<Eigen::Vector2d> vector2(const json& object, const std::string& key);
+/// A ball on the cloth from {"position": [x, y], "v": [x, y, z], "omega": [x, y, z]} (v and omega default to 0;
+/// the centre at height `radius`); errors name the field after `prefix` ("balls[2].position").
+Expected<BallState> ballOnCloth(const json& fields, const std::string& prefix, double radius);
 std::vector<double> toVector3(const Eigen::Vector3d& v);
 json stateJson(const BallState& state);
 /// {t, type, position, v, omega, cushion?, pocket?}

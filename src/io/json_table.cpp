@@ -25,20 +25,10 @@ Expected<TableBall> tableBall(const json& fields, std::size_t i, double radius)
     return invalidArgument(prefix, "must be an object {\"id\": \"…\", \"position\": [x, y]}");
   if (!fields.contains("id") || !fields.at("id").is_string())
     return invalidArgument(prefix + ".id", "is required: a string");
-  auto position = vector2(fields, "position");
-  if (!position)
-    return nested(prefix, position.error());
-  auto velocity = vector3(fields, "v", Eigen::Vector3d::Zero());
-  if (!velocity)
-    return nested(prefix, velocity.error());
-  auto spin = vector3(fields, "omega", Eigen::Vector3d::Zero());
-  if (!spin)
-    return nested(prefix, spin.error());
-  TableBall ball{fields.at("id").get<std::string>(), {}};
-  ball.state.position << position.value(), radius;
-  ball.state.velocity = velocity.value();
-  ball.state.angular_velocity = spin.value();
-  return ball;
+  auto state = ballOnCloth(fields, prefix, radius);
+  if (!state)
+    return state.error();
+  return TableBall{fields.at("id").get<std::string>(), state.value()};
 }
 
 Expected<std::vector<TableBall>> tableBalls(const json& request, double radius)

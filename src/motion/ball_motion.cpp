@@ -26,11 +26,7 @@ Status validate(const MotionParameters& p)
 Expected<BallTrajectory> predictTrajectory(const BallState& start, const BallProperties& ball, const Table& table,
                                            const MotionParameters& parameters)
 {
-  if (Status status = firstError({requirePositive(ball.mass, "ball_mass"), requirePositive(ball.radius, "ball_radius"),
-                                  validate(parameters), validate(table)});
-      !status)
-    return status.error();
-  if (Status status = validateCushionHeight(table.cushion_height, ball.radius, "table.cushion_height"); !status)
+  if (Status status = detail::checkMotionSetting(ball, table, parameters); !status)
     return status.error();
   if (Status status = detail::checkStart(start, ball, table); !status)
     return status.error();

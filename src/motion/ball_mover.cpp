@@ -36,6 +36,15 @@ Deadline deadlineAfter(double seconds)
          std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
 }
 
+Status checkMotionSetting(const BallProperties& ball, const Table& table, const MotionParameters& parameters)
+{
+  if (Status status = firstError({requirePositive(ball.mass, "ball_mass"), requirePositive(ball.radius, "ball_radius"),
+                                  validate(parameters), validate(table)});
+      !status)
+    return status;
+  return validateCushionHeight(table.cushion_height, ball.radius, "table.cushion_height");
+}
+
 Status checkStart(const BallState& start, const BallProperties& ball, const Table& table, const std::string& prefix)
 {
   if (Status status =

@@ -19,6 +19,10 @@ using Deadline = std::chrono::steady_clock::time_point;
 
 Deadline deadlineAfter(double seconds);
 
+/// Checks what every simulation on a table needs: the ball's mass and radius, the motion parameters, the table and
+/// its cushions' height against the ball.
+Status checkMotionSetting(const BallProperties& ball, const Table& table, const MotionParameters& parameters);
+
 /// Checks a ball's start: finite, plausible speeds, on the cloth, clear of the cushions and the pockets. The error
 /// names the field ("position", "v", "omega") after `prefix` ("balls[3].").
 Status checkStart(const BallState& start, const BallProperties& ball, const Table& table,

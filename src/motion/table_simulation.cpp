@@ -76,11 +76,7 @@ Expected<TableTrajectory> simulateTable(const std::vector<TableBall>& balls, con
                                         const Table& table, const MotionParameters& parameters,
                                         const BallContactSettings& contact)
 {
-  if (Status status = firstError({requirePositive(ball.mass, "ball_mass"), requirePositive(ball.radius, "ball_radius"),
-                                  validate(parameters), validate(table)});
-      !status)
-    return status.error();
-  if (Status status = validateCushionHeight(table.cushion_height, ball.radius, "table.cushion_height"); !status)
+  if (Status status = detail::checkMotionSetting(ball, table, parameters); !status)
     return status.error();
   if (Status status = detail::checkBalls(balls, ball, table); !status)
     return status.error();
