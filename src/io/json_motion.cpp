@@ -244,9 +244,8 @@ Expected<json> solveBallMotion(const json& request, const SolverOptions& options
   return predict(setup.value(), position.value(), v.value(), omega.value());
 }
 
-Expected<json> solveShot(const json& request, const SolverOptions& options)
+Expected<StrikeSetup> strikeSetup(const json& request, const SolverOptions& options)
 {
-  // Every field is read, the table file included, before the strike is solved: bad input costs nothing.
   auto strike = cueStrikeFromJson(request);
   if (!strike)
     return strike.error();
@@ -254,6 +253,15 @@ Expected<json> solveShot(const json& request, const SolverOptions& options)
   auto setup = motionSetup(request, options, &s.table_contact, BallProperties{s.ball_mass, s.ball_radius});
   if (!setup)
     return setup.error();
+  return StrikeSetup{s, setup.value()};
+}
+
+Expected<json> solveShot(const json& request, const SolverOptions& options)
+{
+  auto setup = strikeSetup(request, options);
+  if (!setup)
+    return setup.error();
+  const CueStrike& s = setup.value().strike;
   auto position = vector2(request, "ball_position");
   if (!position)
     return position.error();
@@ -261,7 +269,7 @@ Expected<json> solveShot(const json& request, const SolverOptions& options)
   if (!solved)
     return solved.error();
   const CueStrikeResult& result = solved.value();
-  auto trajectory = predict(setup.value(), position.value(), result.velocity, result.angular_velocity);
+  auto trajectory = predict(setup.value().motion, position.value(), result.velocity, result.angular_velocity);
   if (!trajectory)
     return trajectory.error();
   return json{{"strike", cueStrikeJson(result)}, {"trajectory", trajectory.value()}};

@@ -8,6 +8,7 @@
 
 #include "billiard_shot_planner/core/expected.hpp"
 #include "billiard_shot_planner/motion/ball_motion.hpp"
+#include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "billiard_shot_planner/scenarios/sphere_kinematics.hpp"
 
 namespace billiard_shot_planner
@@ -29,6 +30,14 @@ struct MotionSetup
 /// given, is the cloth the strike used (the table's unless a table file overrides it).
 Expected<MotionSetup> motionSetup(const json& request, const SolverOptions& options, const SurfaceContact* cloth,
                                   const BallProperties& ball);
+/// The strike of a request (its cue fields) and the table and motion it moves on, all read before anything is
+/// solved: bad input costs nothing.
+struct StrikeSetup
+{
+  CueStrike strike;
+  MotionSetup motion;
+};
+Expected<StrikeSetup> strikeSetup(const json& request, const SolverOptions& options);
 /// object[key] as [x, y].
 Expected<Eigen::Vector2d> vector2(const json& object, const std::string& key);
 /// A ball on the cloth from {"position": [x, y], "v": [x, y, z], "omega": [x, y, z]} (v and omega default to 0;

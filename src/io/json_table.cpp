@@ -141,13 +141,10 @@ Expected<bool> wantsSamples(const json& request)
 Expected<json> solveTableShot(const json& request, const SolverOptions& options)
 {
   // Every field is read before the strike is solved: bad input costs nothing.
-  auto strike = cueStrikeFromJson(request);
-  if (!strike)
-    return strike.error();
-  const CueStrike& s = strike.value();
-  auto setup = motionSetup(request, options, &s.table_contact, BallProperties{s.ball_mass, s.ball_radius});
+  auto setup = strikeSetup(request, options);
   if (!setup)
     return setup.error();
+  const CueStrike& s = setup.value().strike;
   auto balls = tableBalls(request, s.ball_radius);
   if (!balls)
     return balls.error();
@@ -166,7 +163,7 @@ Expected<json> solveTableShot(const json& request, const SolverOptions& options)
   std::vector<TableBall> start = balls.value();
   start[cue.value()].state.velocity = solved.value().velocity;
   start[cue.value()].state.angular_velocity = solved.value().angular_velocity;
-  const MotionSetup& m = setup.value();
+  const MotionSetup& m = setup.value().motion;
   auto run = simulateTable(start, m.ball, m.table, m.parameters, contact.value());
   if (!run)
     return run.error();
