@@ -2,6 +2,7 @@
 #include "parameter_names.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "billiard_shot_planner/core/validation.hpp"
 
@@ -39,25 +40,31 @@ Status readPockets(const ros::NodeHandle& pnh, Table& table)
   return {};
 }
 
+/// A parameter that names one of two choices: `value` becomes `first` or `second`; anything else is refused.
+template <class Choice>
+Status readChoice(const ros::NodeHandle& pnh, const std::string& name, std::pair<const char*, Choice> first,
+                  std::pair<const char*, Choice> second, Choice& value)
+{
+  std::string chosen = value == first.second ? first.first : second.first;
+  pnh.param(name, chosen, chosen);
+  if (chosen != first.first && chosen != second.first)
+    return invalidArgument(
+        name, std::string("must be \"") + first.first + "\" or \"" + second.first + "\", got \"" + chosen + "\"");
+  value = chosen == first.first ? first.second : second.second;
+  return {};
+}
+
 Status readMotionChoices(const ros::NodeHandle& pnh, MotionParameters& motion)
 {
-  std::string model = motion.rolling_model == RollingModel::Paper ? "paper" : "pooltool";
-  pnh.param("motion/rolling_model", model, model);
-  if (model != "paper" && model != "pooltool")
-    return invalidArgument("motion/rolling_model", "must be \"paper\" or \"pooltool\", got \"" + model + "\"");
-  motion.rolling_model = model == "paper" ? RollingModel::Paper : RollingModel::Pooltool;
   pnh.param("motion/planar", motion.planar, motion.planar);
-  return {};
+  return readChoice(pnh, "motion/rolling_model", std::pair{"paper", RollingModel::Paper},
+                    std::pair{"pooltool", RollingModel::Pooltool}, motion.rolling_model);
 }
 
 Status readBallContactChoices(const ros::NodeHandle& pnh, BallContactSettings& contact)
 {
-  std::string model = contact.friction_model == BallBallFriction::Alciatore ? "alciatore" : "constant";
-  pnh.param("ball_ball/friction_model", model, model);
-  if (model != "alciatore" && model != "constant")
-    return invalidArgument("ball_ball/friction_model", "must be \"alciatore\" or \"constant\", got \"" + model + "\"");
-  contact.friction_model = model == "alciatore" ? BallBallFriction::Alciatore : BallBallFriction::Constant;
-  return {};
+  return readChoice(pnh, "ball_ball/friction_model", std::pair{"alciatore", BallBallFriction::Alciatore},
+                    std::pair{"constant", BallBallFriction::Constant}, contact.friction_model);
 }
 
 Status checkNodeSettings(const NodeSettings& s)
