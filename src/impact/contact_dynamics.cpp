@@ -72,7 +72,10 @@ void ContactDynamics::relativeVelocity(const double* y, Eigen::VectorXd& velocit
       return addImpulseResponse<6>(y, velocity);
     default:
       velocity = space_.w0;
-      velocity.noalias() += space_.delassus.lazyProduct(Eigen::Map<const Eigen::VectorXd>(y, space_.size));
+      if (space_.sparse())
+        velocity.noalias() += space_.sparse_delassus * Eigen::Map<const Eigen::VectorXd>(y, space_.size);
+      else
+        velocity.noalias() += space_.delassus * Eigen::Map<const Eigen::VectorXd>(y, space_.size);
   }
 }
 
@@ -200,7 +203,7 @@ void ContactDynamics::firstOrderLags(const double* y, const Eigen::VectorXd& w, 
     const double speed = v_t.norm();
     if (speed == 0.0)
       continue;
-    const Eigen::Vector2d a_t(space_.delassus.row(row + 1).dot(force), space_.delassus.row(row + 2).dot(force));
+    const Eigen::Vector2d a_t = tangentialResponse(row, force);
     const double turn_rate = (v_t.x() * a_t.y() - v_t.y() * a_t.x()) / (speed * speed);
     // The true spring length, not the floored one of the integrated slip (coneLength): here it only sets the lag,
     // no stiffness to bound. The floor can be orders of magnitude above a lightly loaded cone (a rolling ball's cloth
@@ -249,6 +252,13 @@ void ContactDynamics::addLagRates(const double* y, const Eigen::VectorXd& force,
     const double lag_rate = (scratch.shifted_lags[i].angle - lag.angle) / step;
     lag.angle = std::asin(std::clamp(std::sin(lag.angle) - lag.relaxation * lag_rate, -1.0, 1.0));
   }
+}
+
+Eigen::Vector2d ContactDynamics::tangentialResponse(int row, const Eigen::VectorXd& force) const
+{
+  if (space_.sparse())
+    return {space_.sparse_delassus.row(row + 1).dot(force), space_.sparse_delassus.row(row + 2).dot(force)};
+  return {space_.delassus.row(row + 1).dot(force), space_.delassus.row(row + 2).dot(force)};
 }
 
 double ContactDynamics::relaxationRatio(std::size_t contact, const Eigen::VectorXd& w,

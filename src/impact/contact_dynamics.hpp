@@ -112,6 +112,8 @@ private:
   /// w = w0 + W I for a contact space of N rows.
   template <int N>
   void addImpulseResponse(const double* y, Eigen::VectorXd& velocity) const;
+  /// (W F) on the two tangent rows that follow normal row `row`: the tangential acceleration of a contact.
+  Eigen::Vector2d tangentialResponse(int row, const Eigen::VectorXd& force) const;
   /// Rates of contact i's springs; cone_length is its coneLength() when it slides. The carrier of a direction that
   /// follows its slip (with `also_following`) waits.
   void springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w, double cone_length,

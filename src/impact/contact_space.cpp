@@ -28,6 +28,20 @@ Eigen::MatrixXd stackJacobian(const ImpactProblem& problem, ContactSpace& space)
   }
   return jacobian;
 }
+/// Contact spaces up to this size stay dense: their products are unrolled or short (contact_dynamics.cpp).
+constexpr int DENSE_SIZE_LIMIT = 12;
+/// The fill below which a sparse product beats a dense one (it reads an index per entry, and vectorises less).
+constexpr double SPARSE_FILL_LIMIT = 0.5;
+
+void useSparseDelassusIfWorthIt(ContactSpace& space)
+{
+  if (space.size <= DENSE_SIZE_LIMIT)
+    return;
+  const auto nonzeros = (space.delassus.array() != 0.0).count();
+  if (static_cast<double>(nonzeros) >= SPARSE_FILL_LIMIT * static_cast<double>(space.delassus.size()))
+    return;
+  space.sparse_delassus = space.delassus.sparseView(1.0, 0.0);  // exact zeros only: the products stay exact
+}
 }  // namespace
 
 ContactSpace buildContactSpace(const ImpactProblem& problem)
@@ -53,6 +67,7 @@ ContactSpace buildContactSpace(const ImpactProblem& problem)
   space.time_scale = 1.0 / std::sqrt(k_ref * w_ref);
   space.delassus = delassus / w_ref;
   space.w0 = w0 / space.velocity_scale;
+  useSparseDelassusIfWorthIt(space);
   // Round-off of a contact at rest is not a slip: its direction is noise, and the first stick and slip decisions
   // of a contact loaded from rest, made while its forces are of the same order (1e-23), followed it. A rolling
   // ball's cushion hit integrated from the start at 1e-13 came out 0.13 m/s off (its cloth stuck).

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <vector>
 
 #include "billiard_shot_planner/impact/impact_problem.hpp"
@@ -24,6 +25,9 @@ struct ContactSpace
   int size = 0;
 
   Eigen::MatrixXd delassus;  ///< W̃, dimensionless
+  /// W̃ without its zeros, when it has few: balls that share no contact leave zero blocks (a rack's W̃ is four
+  /// fifths zeros), and products with it are most of a large impact's cost. Empty when W̃ is small or dense.
+  Eigen::SparseMatrix<double, Eigen::RowMajor> sparse_delassus;
   Eigen::VectorXd w0;        ///< w̃0, dimensionless
   Eigen::MatrixXd response;  ///< M⁻¹ Jᵀ in physical units: Δu = response · I
 
@@ -34,6 +38,7 @@ struct ContactSpace
   double stiffness_scale = 1.0;  ///< k_ref
 
   std::size_t contactCount() const { return offset.size(); }
+  bool sparse() const { return sparse_delassus.nonZeros() > 0; }
 };
 
 /// Dimensionless velocity below which a contact velocity is round-off (the normalised velocities are of order one).
