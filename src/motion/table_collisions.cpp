@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "table_events.hpp"
+
 namespace billiard_shot_planner
 {
 namespace detail
@@ -18,9 +20,16 @@ BallCollision collisionOf(const std::vector<BallState>& touching, const BallProp
   collision.friction_model = contact.friction_model;
   collision.cloth = table.cloth;
   collision.stiffness_ratio = contact.stiffness_ratio;
-  for (const BallState& state : touching)
+  collision.cushion = table.cushion;
+  collision.cushion_stiffness_ratio = table.cushion_stiffness_ratio;
+  for (std::size_t i = 0; i < touching.size(); ++i)
+  {
+    const BallState& state = touching[i];
     collision.balls.push_back({state.position.head<2>(), state.velocity, state.angular_velocity,
                                std::max(state.position.z() - ball.radius, 0.0)});
+    for (int rail : touchedCushions(state.position, table, ball.radius))
+      collision.cushions.push_back({i, cushionNormal(rail, table, state.position)});
+  }
   return collision;
 }
 }  // namespace

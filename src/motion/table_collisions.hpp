@@ -9,8 +9,8 @@ namespace billiard_shot_planner
 {
 namespace detail
 {
-/// The states right after the multiple impact of balls that touch (each with its cloth contact), by the
-/// ball-collision scenario: one engine problem for the whole cluster.
+/// The states right after the multiple impact of balls that touch (each with its cloth contact and the cushions it
+/// touches), by the ball-collision scenario: one engine problem for the whole cluster.
 Expected<std::vector<BallState>> resolveBallImpact(const std::vector<BallState>& touching, const BallProperties& ball,
                                                    const Table& table, const BallContactSettings& contact,
                                                    const SolverOptions& options);

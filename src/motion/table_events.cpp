@@ -228,6 +228,19 @@ Eigen::Vector3d cushionNormal(int rail, const Table& table, const Eigen::Vector3
   return normal.normalized();
 }
 
+std::vector<int> touchedCushions(const Eigen::Vector3d& centre, const Table& table, double radius)
+{
+  std::vector<int> rails;
+  for (int rail = 0; rail < 4; ++rail)
+  {
+    const Nose nose = noseOf(rail, table);
+    const double across = nose.edge - nose.side * centre(nose.axis);  // from the nose line into the table
+    if (std::hypot(across, centre.z() - table.cushion_height) <= radius + CONTACT_DISTANCE)
+      rails.push_back(rail);
+  }
+  return rails;
+}
+
 std::optional<CushionCrossing> firstCushionHit(const MotionSegment& segment, const Table& table, double radius,
                                                double horizon)
 {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 
@@ -19,6 +20,10 @@ double cushionReach(const Table& table, double radius);
 /// Unit normal of the cushion contact (from the nose towards the ball's centre) for cushion `rail` (0: −x, 1: +x,
 /// 2: −y, 3: +y), with the ball's centre at `centre` (table frame) touching the nose.
 Eigen::Vector3d cushionNormal(int rail, const Table& table, const Eigen::Vector3d& centre);
+
+/// The cushions (0: −x, 1: +x, 2: −y, 3: +y) whose nose a ball with its centre at `centre` touches, to
+/// CONTACT_DISTANCE: its centre is R from the nose line, on the cloth or in the air.
+std::vector<int> touchedCushions(const Eigen::Vector3d& centre, const Table& table, double radius);
 
 /// How the ball meets a cushion nose.
 enum class NoseContact

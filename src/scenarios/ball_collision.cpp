@@ -115,6 +115,33 @@ Contact clothContact(const BallCollision& c, std::size_t ball, Eigen::Index coor
   return makeContact(name.c_str(), rows, contactLaw(c.cloth, c.stiffness_ratio));
 }
 
+Contact cushionContact(const BallCollision& c, const CushionTouch& touch, Eigen::Index coordinates)
+{
+  // The ball is body A, the fixed cushion B: the contact point is at −R n̂ from the centre.
+  const Eigen::Vector3d normal = touch.normal.normalized();
+  Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(3, coordinates);
+  rows.block<3, 6>(0, 6 * static_cast<Eigen::Index>(touch.ball)) =
+      pointVelocityRows(contactFrame(normal), -c.ball_radius * normal);
+  const std::string name = ballName(touch.ball) + "-cushion";
+  return makeContact(name.c_str(), rows, contactLaw(c.cushion, c.stiffness_ratio * c.cushion_stiffness_ratio));
+}
+
+Status checkCushions(const BallCollision& c)
+{
+  for (std::size_t k = 0; k < c.cushions.size(); ++k)
+  {
+    const std::string field = "cushions[" + std::to_string(k) + "]";
+    if (c.cushions[k].ball >= c.balls.size())
+      return invalidArgument(field + ".ball", "names no ball: there are " + std::to_string(c.balls.size()));
+    if (Status status = requireFinite(c.cushions[k].normal, field + ".normal"); !status)
+      return status;
+    if (!(c.cushions[k].normal.norm() > 0.0))
+      return invalidArgument(field + ".normal", "must not be zero");
+  }
+  return firstError(
+      {validate(c.cushion, "cushion"), requireStiffnessRatio(c.cushion_stiffness_ratio, "cushion_stiffness_ratio")});
+}
+
 bool anyContactApproaches(const ImpactProblem& problem)
 {
   for (const Contact& contact : problem.contacts)
@@ -144,9 +171,11 @@ Expected<Configuration> configure(const BallCollision& c)
   for (std::size_t i = 0; i < c.balls.size(); ++i)
     if (onCloth(c, i))
       problem.contacts.push_back(clothContact(c, i, coordinates));
+  for (const CushionTouch& touch : c.cushions)
+    problem.contacts.push_back(cushionContact(c, touch, coordinates));
   if (!anyContactApproaches(problem))
     return Error{ErrorCode::NoApproachingContact, "balls",
-                 "no touching pair approaches and no ball moves into the cloth: there is no collision"};
+                 "no touching pair approaches and no ball moves into the cloth or a cushion: there is no collision"};
   return configuration;
 }
 }  // namespace
@@ -168,6 +197,8 @@ Status validate(const BallCollision& c)
   for (std::size_t i = 0; i < c.balls.size(); ++i)
     if (Status status = checkBall(c.balls[i], i, c.ball_radius); !status)
       return status;
+  if (Status status = checkCushions(c); !status)
+    return status;
   return checkOverlaps(c);
 }
 

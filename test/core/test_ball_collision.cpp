@@ -346,6 +346,86 @@ TEST(BallCollision, NewtonsCradleOnTheClothIsTheBallChain)
 
 // --- Invariants over random clusters ------------------------------------------------------------------------------
 
+// A row of touching balls against a cushion whose nose is at the height of their centres, hit head-on along the
+// row: the cushion is one more contact of the same impact, and the physics that of BallChain with a wall (the
+// cushion's stiffness k_cloth/k_bb · k_cushion/k_cloth and restitution), configured independently.
+TEST(BallCollision, ARowFrozenToACushionIsTheChainAgainstAWall)
+{
+  for (std::size_t n = 2; n <= 5; ++n)
+  {
+    bsp::BallCollision c;
+    c.balls.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      c.balls[i].position = Eigen::Vector2d(2.0 * R * static_cast<double>(i), 0.0);
+    c.balls[0].velocity = Eigen::Vector3d(2.0, 0.0, 0.0);
+    c.cushions.push_back({n - 1, -Eigen::Vector3d::UnitX()});
+    bsp::BallChain chain{std::vector<double>(n, M), std::vector<double>(n, 0.0), std::vector<double>(n, 1.0),
+                         std::vector<double>(n, E), true};
+    chain.velocities[0] = 2.0;
+    chain.stiffness.back() = c.stiffness_ratio * c.cushion_stiffness_ratio;
+    chain.restitution.back() = c.cushion.restitution;
+    const auto row = solved(c);
+    const auto reference = bsp::solve(chain).value();
+    EXPECT_EQ(row.contact_names[row.cushionContact(0)], "ball" + std::to_string(n - 1) + "-cushion");
+    for (std::size_t i = 0; i < n; ++i)
+      EXPECT_NEAR(row.balls[i].velocity.x(), reference.velocity(static_cast<Eigen::Index>(i)), 1e-9)
+          << n << " balls, ball " << i;
+    EXPECT_NEAR(row.impact.impulses[row.cushionContact(0)].normal, reference.impulses[n - 1].normal, 1e-9 * M * 2.0);
+  }
+}
+
+// A ball frozen to a real cushion (nose above its centre) hit by a stun ball at an angle: one impact of the pair,
+// both cloth contacts and the cushion. The cushion only pushes (along its normal, within its friction cone), the
+// frozen ball does not end moving into it, energy does not rise, and the balls' momentum changes by the cloth's
+// and the cushion's impulses alone.
+TEST(BallCollision, ABallFrozenToACushionTakesTheCushionIntoTheImpact)
+{
+  const double h = 0.0363;  // the default table's nose height
+  const double sin_nose = (h - R) / R, cos_nose = std::sqrt(1.0 - sin_nose * sin_nose);
+  const Eigen::Vector3d normal(-cos_nose, 0.0, -sin_nose);  // from the nose (at +x) to the frozen ball's centre
+  for (double cut_deg : {0.0, 20.0, 45.0})
+    for (double speed : {0.5, 2.0})
+    {
+      const double cut = cut_deg * DEG;
+      bsp::BallCollision c = twoBalls(cut, speed);
+      c.cushions.push_back({1, normal});
+      const bsp::BallCollisionResult r = solved(c);
+      const bsp::ContactImpulse& at_cushion = r.impact.impulses[r.cushionContact(0)];
+      EXPECT_GT(at_cushion.normal, 0.0) << cut_deg << "°, " << speed << " m/s";
+      EXPECT_LE(at_cushion.tangential.norm(), c.cushion.friction * at_cushion.normal * (1.0 + 1e-9));
+      EXPECT_GE(r.balls[1].velocity.dot(normal), -1e-9 * speed) << cut_deg << "°, " << speed << " m/s";
+      const Eigen::Matrix3d frame = bsp::contactFrame(normal);
+      const Eigen::Vector3d cushion = frame.row(0).transpose() * at_cushion.tangential.x() +
+                                      frame.row(1).transpose() * at_cushion.tangential.y() +
+                                      frame.row(2).transpose() * at_cushion.normal;
+      Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
+      double before = 0.0, after = 0.0;
+      for (std::size_t i = 0; i < 2; ++i)
+      {
+        momentum += M * (r.balls[i].velocity - c.balls[i].velocity);
+        before +=
+            0.5 * M * c.balls[i].velocity.squaredNorm() + 0.2 * M * R * R * c.balls[i].angular_velocity.squaredNorm();
+        after +=
+            0.5 * M * r.balls[i].velocity.squaredNorm() + 0.2 * M * R * R * r.balls[i].angular_velocity.squaredNorm();
+      }
+      EXPECT_NEAR((momentum - clothImpulse(r, 0) - clothImpulse(r, 1) - cushion).norm(), 0.0, 1e-9 * M * speed);
+      EXPECT_LE(after, before * (1.0 + 1e-10));
+    }
+}
+
+TEST(BallCollision, RefusesACushionOfNoBall)
+{
+  bsp::BallCollision c = twoBalls(0.0, 1.0);
+  c.cushions.push_back({2, Eigen::Vector3d::UnitX()});
+  auto result = bsp::solve(c);
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.error().field, "cushions[0].ball");
+  c.cushions[0] = {1, Eigen::Vector3d::Zero()};
+  result = bsp::solve(c);
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.error().field, "cushions[0].normal");
+}
+
 namespace
 {
 /// A cluster of n touching balls grown from the origin, each new ball touching a random earlier one (in line with

@@ -176,6 +176,45 @@ TEST(TableSimulation, AStunShotMeetsTheObjectBallWhenTheGapIsCovered)
   EXPECT_EQ(hit->ball, 0);
 }
 
+// A ball frozen to a rail and hit, head-on and at a cut: the rail is part of the ball impact, so the frozen ball
+// leaves the impact not moving into the rail (no separate cushion hit at the same instant), no ball ever crosses a
+// nose line, and the table's energy never rises.
+TEST(TableSimulation, ABallFrozenToARailIsHitTogetherWithTheRail)
+{
+  const bsp::Table table;
+  const bsp::BallProperties ball;
+  const double sin_nose = (table.cushion_height - R) / R;
+  const double nose_line = 0.5 * table.length - R * std::sqrt(1.0 - sin_nose * sin_nose);
+  for (double cut_deg : {0.0, 30.0})
+  {
+    const double cut = cut_deg * M_PI / 180.0;
+    const Eigen::Vector2d frozen(nose_line, 0.2);
+    const Eigen::Vector2d cue =
+        frozen - 2.0 * R * Eigen::Vector2d(std::cos(cut), std::sin(cut)) - Eigen::Vector2d(0.3, 0.0);
+    const auto run = bsp::simulateTable(
+        {{"cue", at(cue.x(), cue.y(), {1.5, 0, 0})}, {"one", at(frozen.x(), frozen.y())}}, ball, table);
+    ASSERT_TRUE(run.ok()) << run.error().describe();
+    ASSERT_FALSE(run.value().ball_impacts.empty());
+    const double hit_time = run.value().ball_impacts[0].time;
+    const bsp::BallTrajectory& one = run.value().balls[1];
+    const auto hit = std::find_if(one.events.begin(), one.events.end(),
+                                  [](const bsp::MotionEvent& e) { return e.type == Type::BallCollision; });
+    ASSERT_NE(hit, one.events.end());
+    EXPECT_LE(hit->state.velocity.x(), 1e-9) << cut_deg << "°";
+    for (const bsp::MotionEvent& e : one.events)
+      EXPECT_FALSE(e.type == Type::CushionHit && e.time == hit_time) << cut_deg << "°";
+    double before = tableEnergy(run.value(), ball, 0.0);
+    for (double t = 0.0; t <= run.value().duration(); t += 1e-4)
+    {
+      for (const bsp::BallTrajectory& b : run.value().balls)
+        EXPECT_LE(std::abs(b.at(t).position.x()), nose_line + 1e-9) << cut_deg << "° t " << t;
+      const double now = tableEnergy(run.value(), ball, t);
+      EXPECT_LE(now, before + 1e-9 * (1.0 + before)) << cut_deg << "° t " << t;
+      before = now;
+    }
+  }
+}
+
 // Random shots among 2–6 balls: no overlap is ever missed (a brute-force fixed-step check at 0.5 ms), and the
 // table's energy never rises (every phase and every impact dissipates).
 TEST(TableSimulation, RandomShotsMissNoCollisionAndNeverGainEnergy)

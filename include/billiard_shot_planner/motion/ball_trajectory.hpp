@@ -35,7 +35,7 @@ enum class MotionEventType
   /// the cushion (sustained contact, not modelled; the path ends)
   CushionContact,
   Pocketed,       ///< the centre enters a pocket's capture region
-  BallCollision,  ///< a multiple impact with other balls (and the cloth) that touch it
+  BallCollision,  ///< a multiple impact with the other balls that touch it, the cloth and any cushion they touch
   Rest,           ///< everything has stopped
   TimeLimit,      ///< the trajectory was cut at MotionParameters::max_time or max_events
 };

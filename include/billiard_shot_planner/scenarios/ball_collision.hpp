@@ -24,6 +24,14 @@ struct CollidingBall
   double height = 0.0;
 };
 
+/// A ball that touches a cushion nose as the impact starts: the cushion is one more contact of the same impact (a
+/// ball frozen to a rail and hit, a ball driven into the rail by a cluster). The cushion is fixed.
+struct CushionTouch
+{
+  std::size_t ball = 0;                               ///< index into BallCollision::balls
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  ///< from the nose to the ball's centre (normalised here)
+};
+
 /// How the ball–ball friction coefficient of each touching pair is chosen.
 enum class BallBallFriction
 {
@@ -63,6 +71,10 @@ struct BallCollision
   /// the cloth depend on it (follow, draw, jumps), and weakly (test_ball_collision.cpp,
   /// StiffnessRatioMattersOnlyThroughTheCloth).
   double stiffness_ratio = 0.1;
+  /// The cushions the balls touch, and their contact law (defaults: those of motion/table.hpp's Table).
+  std::vector<CushionTouch> cushions;
+  SurfaceContact cushion{0.85, 0.2, 10.0};
+  double cushion_stiffness_ratio = 1.0;  ///< k_cushion / k_cloth
   /// Centres within 2R + this are touching, m; closer than 2R − this is an overlap and refused. A micrometre:
   /// far above the round-off of positions in metres and far below what a ball's motion covers during an impact.
   double touching_tolerance = 1e-6;
@@ -86,7 +98,8 @@ struct CollidedBall
 struct BallCollisionResult
 {
   std::vector<CollidedBall> balls;  ///< right after the impact
-  /// Contacts 0 … pairs.size() − 1 join the pairs; the cloth contacts of the balls on the cloth follow.
+  /// Contacts 0 … pairs.size() − 1 join the pairs; the cloth contacts of the balls on the cloth follow, then the
+  /// cushion contacts in the order of BallCollision::cushions.
   std::vector<TouchingPair> pairs;
   std::vector<std::string> contact_names;  ///< "ball0-ball1", "ball1-cloth"
   ImpactResult impact;
@@ -95,6 +108,15 @@ struct BallCollisionResult
   static constexpr std::size_t NO_CLOTH_CONTACT = static_cast<std::size_t>(-1);
 
   std::size_t clothContact(std::size_t ball) const { return cloth_contacts[ball]; }
+  /// The contact of BallCollision::cushions[k].
+  std::size_t cushionContact(std::size_t k) const { return pairs.size() + clothContactCount() + k; }
+  std::size_t clothContactCount() const
+  {
+    std::size_t count = 0;
+    for (std::size_t contact : cloth_contacts)
+      count += contact != NO_CLOTH_CONTACT;
+    return count;
+  }
 };
 
 /// Checks the fields (the error names one: "balls[3].position", "ball_ball.eta2"), refusing fewer than two balls
@@ -105,8 +127,9 @@ Status validate(const BallCollision& collision);
 std::vector<TouchingPair> touchingPairs(const BallCollision& collision);
 
 /// The engine's configuration: 6 coordinates (v, ω) per ball, the pairs' contacts, then the cloth contacts of the
-/// balls on the cloth.
-/// Fails with NoApproachingContact (field "balls") when no two balls touch, or when nothing approaches.
+/// balls on the cloth, then the cushion contacts.
+/// Fails with NoApproachingContact (field "balls") when no two balls touch, or when nothing approaches (a touching
+/// cushion alone is no ball collision: the ball's own motion meets it).
 Expected<ImpactProblem> makeImpactProblem(const BallCollision& collision);
 
 Expected<BallCollisionResult> solve(const BallCollision& collision, const SolverOptions& options = {});
