@@ -133,6 +133,14 @@ void ContactDynamics::carrierDirections(const double* y, SlipDirections& directi
 void ContactDynamics::forces(const double* y, Eigen::VectorXd& force, SlipDirections& directions,
                              LagScratch& scratch) const
 {
+  if (any_quasi_steady_)
+    relativeVelocity(y, scratch.velocity);
+  forcesWithVelocity(y, force, directions, scratch);
+}
+
+void ContactDynamics::forcesWithVelocity(const double* y, Eigen::VectorXd& force, SlipDirections& directions,
+                                         LagScratch& scratch) const
+{
   carrierDirections(y, directions);
   if (any_quasi_steady_)
     followSlip(y, NO_CONTACT, force, directions, scratch);
@@ -142,7 +150,26 @@ void ContactDynamics::forces(const double* y, Eigen::VectorXd& force, SlipDirect
 void ContactDynamics::evaluate(const double* y, ForceEvaluation& at) const
 {
   relativeVelocity(y, at.velocity);
-  forces(y, at.force, at.directions, at.lag);
+  if (any_quasi_steady_)
+    at.lag.velocity = at.velocity;
+  forcesWithVelocity(y, at.force, at.directions, at.lag);
+}
+
+void ContactDynamics::activeRelativeVelocity(const double* y, Eigen::VectorXd& velocity) const
+{
+  if (!space_.sparse())
+    return relativeVelocity(y, velocity);
+  // Row by row, as the sparse product does it (the same sums in the same order), on the active contacts alone.
+  if (velocity.size() != space_.size)
+    velocity.setZero(space_.size);
+  const Eigen::Map<const Eigen::VectorXd> impulses(y, space_.size);
+  for (std::size_t i = 0; i < contacts_.size(); ++i)
+  {
+    if (!contacts_[i].active())
+      continue;
+    for (int row = space_.offset[i]; row < space_.offset[i] + space_.dim[i]; ++row)
+      velocity(row) = space_.w0(row) + space_.sparse_delassus.row(row).dot(impulses);
+  }
 }
 
 void ContactDynamics::forcesAlongDirections(const double* y, const SlipDirections& directions,
@@ -159,7 +186,6 @@ void ContactDynamics::followSlip(const double* y, std::size_t also_following, Ei
   // The lag that keeps ρθ̇ = |v_t| sin(ψ − θ), θ the slip direction's angle and ψ the slip velocity's, on the slow
   // manifold: sin δ = ε(ψ̇ − δ̇) with δ = ψ − θ and ε = ρ/|v_t|, expanded in ε. First order (δ̇ = 0) leaves errors
   // of order ε³ in the friction, second order of order ε⁴ (docs/engine.md, "Quasi-steady slip").
-  relativeVelocity(y, scratch.velocity);
   firstOrderLags(y, scratch.velocity, also_following, force, directions, scratch.lags);
   addLagRates(y, force, also_following, scratch);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
@@ -240,7 +266,15 @@ void ContactDynamics::addLagRates(const double* y, const Eigen::VectorXd& force,
     shifted[k] += step * force(k);
     shifted[n + k] = y[n + k] + step * shifted[n + k];
   }
-  relativeVelocity(shifted.data(), scratch.shifted_velocity);
+  // The velocities are affine in the impulses: at the shifted state they are w + step·W F. The lags read them only
+  // on the tangent rows of the followed contacts.
+  scratch.shifted_velocity = scratch.velocity;
+  for (std::size_t i = 0; i < contacts_.size(); ++i)
+    if (follows(i, also_following))
+    {
+      const int row = space_.offset[i];
+      scratch.shifted_velocity.segment<2>(row + 1) += step * tangentialResponse(row, force);
+    }
   carrierDirections(shifted.data(), scratch.shifted_directions);
   firstOrderLags(shifted.data(), scratch.shifted_velocity, also_following, scratch.shifted_force,
                  scratch.shifted_directions, scratch.shifted_lags);
@@ -389,6 +423,7 @@ Eigen::Vector2d ContactDynamics::followedSlipDirection(std::size_t contact, cons
                                                        ForceEvaluation& scratch) const
 {
   // forces() with the contact following too.
+  relativeVelocity(y, scratch.lag.velocity);
   carrierDirections(y, scratch.directions);
   followSlip(y, contact, scratch.force, scratch.directions, scratch.lag);
   return scratch.directions[contact];
@@ -457,7 +492,12 @@ double ContactDynamics::coneLength(std::size_t contact, const Eigen::VectorXd& f
 
 double ContactDynamics::rates(const double* y, double* dydt, ForceEvaluation& at) const
 {
-  evaluate(y, at);
+  // The rates read the velocities of active contacts only (an inactive one's spring rests): in a large impact most
+  // contacts are inactive at any instant.
+  activeRelativeVelocity(y, at.velocity);
+  if (any_quasi_steady_)
+    at.lag.velocity = at.velocity;
+  forcesWithVelocity(y, at.force, at.directions, at.lag);
   std::copy_n(at.force.data(), space_.size, dydt);
   double shrink_rate = 0.0;
   for (std::size_t i = 0; i < contacts_.size(); ++i)

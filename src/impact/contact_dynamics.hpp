@@ -121,7 +121,13 @@ private:
   /// Spring length of a sliding contact on its friction cone, ρ = μF_n/κ, bounded below (smoothly) where the
   /// spring vanishes.
   double coneLength(std::size_t contact, const Eigen::VectorXd& force) const;
-  /// Sets `directions` of the contacts that follow their slip (with `also_following`) and their forces.
+  /// forces() with scratch.velocity already holding w at y (at least on the rows of the active contacts).
+  void forcesWithVelocity(const double* y, Eigen::VectorXd& force, SlipDirections& directions,
+                          LagScratch& scratch) const;
+  /// w on the rows of the active contacts (the others left as they are) when W̃ is sparse; all of w otherwise.
+  void activeRelativeVelocity(const double* y, Eigen::VectorXd& velocity) const;
+  /// Sets `directions` of the contacts that follow their slip (with `also_following`) and their forces;
+  /// scratch.velocity holds w at y (at least on the rows of the active contacts).
   void followSlip(const double* y, std::size_t also_following, Eigen::VectorXd& force, SlipDirections& directions,
                   LagScratch& scratch) const;
   /// First-order lags sin δ = εψ̇ of the followed contacts at y (velocities w) into `lags`, with `directions` along
