@@ -6,6 +6,8 @@
 #include "../test/fixtures/paper_masse.hpp"
 #include "bench_support.hpp"
 #include "billiard_shot_planner/motion/ball_motion.hpp"
+#include "billiard_shot_planner/motion/table_simulation.hpp"
+#include "billiard_shot_planner/scenarios/ball_collision.hpp"
 #include "paper_impulse_method.hpp"
 #include "paper_masse_method.hpp"
 
@@ -84,6 +86,54 @@ void BM_TrajectoryThreeCushions(benchmark::State& state)
   }
   state.counters["cushion_hits"] = hits;
 }
+/// A table of balls from the first motion to the rest of every ball (strike excluded); argument: −log10 of the
+/// impacts' relative tolerance (12 is the default). Counters: ball impacts and events of all balls.
+void simulateRepeatedly(benchmark::State& state, const std::vector<bsp::TableBall>& balls)
+{
+  bsp::MotionParameters parameters;
+  parameters.impact = bench::withTolerance(std::pow(10.0, -static_cast<double>(state.range(0))));
+  parameters.impact.max_seconds = 60.0;
+  std::size_t impacts = 0, events = 0;
+  for (auto _ : state)
+  {
+    const auto run = bsp::simulateTable(balls, bsp::BallProperties{}, bsp::Table{}, parameters);
+    if (!run)
+    {
+      state.SkipWithError(run.error().describe().c_str());
+      return;
+    }
+    impacts = run.value().ball_impacts.size();
+    events = 0;
+    for (const bsp::BallTrajectory& ball : run.value().balls)
+      events += ball.events.size();
+  }
+  state.counters["ball_impacts"] = static_cast<double>(impacts);
+  state.counters["events"] = static_cast<double>(events);
+}
+
+void BM_TableCutShot(benchmark::State& state)
+{
+  simulateRepeatedly(state, bench::cutShot());
+}
+
+void BM_TableBreak(benchmark::State& state)
+{
+  simulateRepeatedly(state, bench::breakShot());
+}
+
+/// The break's first impact alone: the cue ball (sliding at 8 m/s, no spin) and the 15 racked balls, 47 contacts.
+void BM_RackImpact(benchmark::State& state)
+{
+  bsp::BallCollision rack;
+  for (const bsp::TableBall& ball : bench::breakShot())
+    rack.balls.push_back({ball.state.position.head<2>(), ball.state.velocity, ball.state.angular_velocity, 0.0});
+  rack.balls[0].position.x() = rack.balls[1].position.x() - std::sqrt(std::pow(2.0 * rack.ball_radius, 2) - 1e-4);
+  bsp::SolverOptions options = bench::withTolerance(std::pow(10.0, -static_cast<double>(state.range(0))));
+  options.max_seconds = 60.0;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(bsp::solve(rack, options));
+}
+
 /// The paper's fixed-step impulse method on Table 1; argument: −log10 of the impulse step. Error against the
 /// converged values of docs/validation.md, Table 1 (v1 = 0.6139494, v2 = 0.2097195).
 void BM_Table1PaperMethod(benchmark::State& state)
@@ -120,6 +170,9 @@ void BM_MassePaperMethod(benchmark::State& state)
 BENCHMARK(BM_Table1PaperMethod)->Arg(3)->Arg(4)->Arg(5)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MassePaperMethod)->Arg(3)->Arg(4)->Arg(5)->Arg(6)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_TrajectoryThreeCushions)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_TableCutShot)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RackImpact)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TableBreak)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
 
 // Argument: −log10 of the relative tolerance (12 is the default; the closed form does not depend on it).
 // velocity_error: against the reference of bench_problems.hpp.
