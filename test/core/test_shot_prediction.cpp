@@ -2,8 +2,11 @@
 // every other one is refused as an invalid shot, and none takes long.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
+#include "billiard_shot_planner/scenarios/cue_stroke.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
 
 namespace bsp = billiard_shot_planner;
@@ -42,4 +45,69 @@ TEST(ShotPrediction, RandomCuePlacementsArePredictedOrRefusedAsInvalidShots)
     EXPECT_NE(outcome.value().trajectory.outcome, bsp::MotionOutcome::TimeLimit) << k;
   }
   EXPECT_GT(predicted, 450);
+}
+
+namespace
+{
+struct StraightIn
+{
+  Eigen::Vector3d arriving_velocity, arriving_spin;  ///< the cue ball's just before the collision
+  double rolling_speed;                              ///< its velocity along x when it first rolls after it
+};
+
+/// A level straight-in shot along +x from the cue ball at (−0.5, 0) onto an object ball `gap` ahead of it, the tip
+/// `b` radii above the centre, at cue speed `speed`.
+StraightIn straightIn(double gap, double b, double speed)
+{
+  const bsp::ShotConfiguration configuration;
+  const double R = configuration.ball_radius;
+  const auto stroke = bsp::strokeGeometry({0.0, 0.0, 0.0, b});
+  EXPECT_TRUE(stroke.ok());
+  bsp::CuePlacement cue;
+  cue.ball = Eigen::Vector2d(-0.5, 0.0);
+  cue.direction = stroke.value().cue_direction;
+  cue.tip = Eigen::Vector3d(cue.ball.x(), cue.ball.y(), R) + R * stroke.value().hit_normal;
+  cue.speed = speed;
+  bsp::BallState object;
+  object.position = Eigen::Vector3d(cue.ball.x() + 2.0 * R + gap, 0.0, R);
+  const auto outcome = bsp::predictShot(cue, configuration, {{"one", object}});
+  EXPECT_TRUE(outcome.ok()) << outcome.error().describe();
+  const bsp::BallTrajectory& cue_ball = outcome.value().table.balls[0];
+  const auto& events = cue_ball.events;
+  const auto hit =
+      std::find_if(events.begin(), events.end(),
+                   [](const bsp::MotionEvent& e) { return e.type == bsp::MotionEventType::BallCollision; });
+  const auto rolls = std::find_if(
+      hit, events.end(), [](const bsp::MotionEvent& e) { return e.type == bsp::MotionEventType::SlideToRoll; });
+  EXPECT_TRUE(hit != events.end() && rolls != events.end());
+  if (hit == events.end() || rolls == events.end())
+    return {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), NAN};
+  const bsp::BallState arriving = cue_ball.at(std::nextafter(hit->time, 0.0));
+  return {arriving.velocity, arriving.angular_velocity, rolls->state.velocity.x()};
+}
+}  // namespace
+
+// The three classic straight-in shots. Right after a head-on collision of equal balls the cue ball keeps (1 − e)/2
+// of its speed v and its spin ω (the normal impulse passes through its centre), and the cloth then turns that into
+// rolling at (5v' + 2Rω)/7 — independent of the code: Alciatore's stun, draw and follow. The ball–ball friction on
+// the contact's vertical slip Rω changes Rω by at most (5/2)μ(1 + e)/2·v (an impulse μP_n at lever R, I = 2/5 mR²)
+// with μ ≤ 0.118 (Alciatore's fit at zero slip), which bounds the difference. A centre hit 1 cm away arrives with
+// almost no spin and stops nearly dead; 0.6 R below the centre the ball comes back, 0.6 R above it follows through
+// (at cue speeds of 2.5 and 4 m/s: slower, the cloth uses most of the back spin up over the 0.3 m).
+TEST(ShotPrediction, StunStopsDrawComesBackFollowFollowsThrough)
+{
+  const double e = bsp::BallContactSettings{}.ball_ball.restitution, R = bsp::ShotConfiguration{}.ball_radius;
+  for (double speed : {2.5, 4.0})
+    for (const auto& [gap, b] : {std::pair{0.01, 0.0}, {0.3, -0.6}, {0.3, 0.6}})
+    {
+      const StraightIn shot = straightIn(gap, b, speed);
+      const double v = shot.arriving_velocity.x(), spin = R * shot.arriving_spin.y();
+      const double classical = (5.0 * 0.5 * (1.0 - e) * v + 2.0 * spin) / 7.0;
+      const double bound = 2.0 / 7.0 * 2.5 * 0.118 * 0.5 * (1.0 + e) * v;
+      EXPECT_NEAR(shot.rolling_speed, classical, bound) << "b " << b << ", " << speed << " m/s";
+      if (b == 0.0)
+        EXPECT_LE(std::abs(shot.rolling_speed), 0.03 * v) << speed << " m/s";  // stun: stops nearly dead
+      else
+        EXPECT_GT(b * shot.rolling_speed, 0.15 * v) << "b " << b << ", " << speed << " m/s";  // back or through
+    }
 }
