@@ -1,20 +1,21 @@
 # Checks the layering of the sources under SOURCE_DIR (include/billiard_shot_planner/<layer>/ and src/<layer>/):
-#   core → impact → scenarios → motion → shot → io → ros, cli
+#   core → impact → scenarios → motion → shot → planning → io → ros, cli
 # A file may include its own layer's headers and the public headers of the layers below it; never a higher
 # layer's, never another layer's private header (src/<other>/…), and the ROS-free layers (core … shot, io, cli)
-# no ROS header; the physics layers (core … shot) no file-format library either.
+# no ROS header; the physics layers (core … planning) no file-format library either.
 # Usage: cmake -DSOURCE_DIR=<package root> -P check_layers.cmake   (fails with a list of the violations)
 cmake_minimum_required(VERSION 3.16)
 
-set(LAYERS core impact scenarios motion shot io ros cli)
+set(LAYERS core impact scenarios motion shot planning io ros cli)
 set(RANK_core 0)
 set(RANK_impact 1)
 set(RANK_scenarios 2)
 set(RANK_motion 3)
 set(RANK_shot 4)
-set(RANK_io 5)
-set(RANK_ros 6)
-set(RANK_cli 6)
+set(RANK_planning 5)
+set(RANK_io 6)
+set(RANK_ros 7)
+set(RANK_cli 7)
 set(ROS_HEADERS "^(ros|tf2|tf2_ros|tf2_geometry_msgs|geometry_msgs|std_msgs|visualization_msgs|dynamic_reconfigure|billiard_shot_planner/[A-Za-z]+\\.h)[/>.]")
 set(FORMAT_HEADERS "^(nlohmann|yaml-cpp)/")
 
@@ -51,7 +52,7 @@ foreach(file IN LISTS files)
       set(header "${CMAKE_MATCH_1}")
       if(NOT layer STREQUAL "ros" AND header MATCHES "${ROS_HEADERS}")
         list(APPEND violations "${file}: the ROS-free ${layer} layer includes a ROS header: ${line}")
-      elseif(rank LESS 5 AND header MATCHES "${FORMAT_HEADERS}")
+      elseif(rank LESS 6 AND header MATCHES "${FORMAT_HEADERS}")
         list(APPEND violations "${file}: the physics layer ${layer} includes a file-format library: ${line}")
       endif()
     endif()

@@ -1,0 +1,110 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "billiard_shot_planner/core/expected.hpp"
+#include "billiard_shot_planner/motion/table_simulation.hpp"
+#include "billiard_shot_planner/planning/stroke.hpp"
+#include "billiard_shot_planner/shot/shot_prediction.hpp"
+
+namespace billiard_shot_planner
+{
+/// Gaussian execution noise of a robot's stroke, one standard deviation per stroke parameter. Defaults: FastFiz's
+/// noise at level 1 (σ_φ = 0.125°, σ_θ = 0.1°, σ_V = 0.075 m/s, σ_a = σ_b = 0.5 mm).
+struct ExecutionNoise
+{
+  double phi = 0.125 * M_PI / 180.0;  ///< rad
+  double theta = 0.1 * M_PI / 180.0;  ///< rad
+  double speed = 0.075;               ///< m/s
+  double a = 0.5e-3;                  ///< m, of the hit point across the cue
+  double b = 0.5e-3;                  ///< m, of the hit point up
+};
+
+/// What the robot can do. The cue is a cylinder behind the tip that must touch no other ball and pass above the
+/// rails where it crosses them.
+struct RobotLimits
+{
+  double min_theta = 0.0;                ///< rad, the lowest cue elevation
+  double max_theta = 30.0 * M_PI / 180;  ///< rad
+  double min_speed = 0.5;                ///< m/s, of the cue
+  double max_speed = 6.0;                ///< m/s
+  double max_offset = 0.5;               ///< ball radii: the largest tip offset √(a² + b²) before a miscue
+  double cue_length = 1.0;               ///< m of cue behind the tip that must be clear
+  double cue_radius = 0.0065;            ///< m (a 13 mm shaft)
+  double rail_height = 0.045;            ///< m above the cloth: the rails' top, which the cue must pass above
+};
+
+/// A circle on the cloth where the cue ball should come to rest (position play).
+struct CueRegion
+{
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  double radius = 0.1;  ///< m
+};
+
+/// Game rules a pot must also satisfy.
+struct PlanRules
+{
+  bool target_first = false;  ///< the cue ball's first contact must be the target
+  bool only_target = false;   ///< no ball but the target may drop
+};
+
+/// What to plan: a pot means that the target drops (in `pocket`, when one is named) and the cue ball does not (and
+/// the cue ball stops in `cue_region`, when one is given, and the rules hold).
+struct PlanRequest
+{
+  std::vector<TableBall> balls;  ///< every ball on the table, at rest, the cue ball among them
+  std::string cue_ball = CUE_BALL_ID;
+  std::string target;  ///< the ball to pot; empty: any object ball
+  int pocket = -1;     ///< index into Table::pockets; −1: any
+  RobotLimits limits;
+  ExecutionNoise noise;
+  std::optional<CueRegion> cue_region;
+  PlanRules rules;
+  double budget = 0.5;  ///< s of wall-clock time
+  unsigned seed = 1;    ///< of the noisy rollouts: the same request and seed give the same plan
+  int rollouts = 200;   ///< noisy rollouts of each shot that pots, to estimate its probability
+  int threads = 0;      ///< rollouts in parallel; 0: one per hardware thread
+};
+
+/// A shot and how likely it is to pot under the noise.
+struct PlannedShot
+{
+  Stroke stroke;
+  CuePlacement cue;  ///< the same shot as a cue pose and speed (as ~predict_shot takes it)
+  std::string target;
+  int pocket = -1;
+  /// m: how far inside its pocket's capture circle the target passes in the noise-free shot (negative: by how much
+  /// it misses)
+  double margin = 0.0;
+  double success_probability = 0.0;
+  double confidence_low = 0.0, confidence_high = 0.0;  ///< Wilson's 95 % interval
+  int rollouts = 0;
+};
+
+struct ShotPlan
+{
+  bool found = false;  ///< a shot that pots without noise was found
+  /// The shot with the highest pot probability; when none pots, the attempt that came closest, and `explanation`
+  /// says why none was found.
+  PlannedShot best;
+  std::string explanation;
+  ShotOutcome outcome;                    ///< the noise-free prediction of `best`
+  std::vector<PlannedShot> alternatives;  ///< the next best shots, best first
+  int evaluations = 0;                    ///< shots simulated
+  double seconds = 0.0;
+};
+
+/// Checks the request against the configuration; errors name the field ("target", "limits.speed", "noise.phi",
+/// "balls[2].position", …).
+Status validate(const PlanRequest& request, const ShotConfiguration& configuration);
+
+/// Plans a pot (docs/planning.md): candidate shots from the ghost ball for every target and pocket whose paths are
+/// clear, refined by NLopt's Sbplx on the target's margin in its pocket, then ranked by their pot probability from
+/// noisy rollouts. Ends within the budget (the first shot evaluated is always finished). Pure function of its
+/// arguments; thread-safe.
+Expected<ShotPlan> planShot(const PlanRequest& request, const ShotConfiguration& configuration);
+
+}  // namespace billiard_shot_planner

@@ -1,0 +1,123 @@
+#include "candidates.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace billiard_shot_planner
+{
+namespace planning
+{
+namespace
+{
+/// Steps of the cue's elevation tried from the lowest allowed until the cue clears.
+constexpr double ELEVATION_STEP = 2.0 * M_PI / 180.0;
+
+/// Distance from `point` to the segment [from, to].
+double distanceToSegment(const Eigen::Vector2d& point, const Eigen::Vector2d& from, const Eigen::Vector2d& to)
+{
+  const Eigen::Vector2d along = to - from;
+  const double length2 = along.squaredNorm();
+  const double s = length2 > 0.0 ? std::clamp((point - from).dot(along) / length2, 0.0, 1.0) : 0.0;
+  return (from + s * along - point).norm();
+}
+
+/// Whether a ball rolling from `from` to `to` passes 2R from every other ball than `ignored`.
+bool pathIsClear(const Eigen::Vector2d& from, const Eigen::Vector2d& to, const std::string& ignored,
+                 const PlanContext& context)
+{
+  for (const TableBall& ball : context.others)
+    if (ball.id != ignored && distanceToSegment(ball.state.position.head<2>(), from, to) < 2.0 * context.radius())
+      return false;
+  return true;
+}
+
+/// A cue speed that sends the target about `object_path` m and the cue ball `cue_path` m before it, at this cut: the
+/// object ball leaves at (1 + e)/2 cos(cut) of the cue ball's speed and needs v² = 2·a·(path + 0.3 m) with a rolling
+/// deceleration of about 0.5 m/s² (sliding included); the cue ball loses little on the way, and leaves the tip at
+/// about 1.2 times the cue's speed. A starting point: the refinement adjusts it.
+double initialSpeed(double cue_path, double object_path, double cut, const PlanContext& context)
+{
+  constexpr double DECELERATION = 0.5, BALL_OVER_CUE = 1.2;
+  const double e = context.configuration.ball_contact.ball_ball.restitution;
+  const double object = std::sqrt(2.0 * DECELERATION * (object_path + 0.3));
+  const double cue_ball =
+      std::sqrt(std::pow(object / (0.5 * (1.0 + e) * std::cos(cut)), 2) + 2.0 * DECELERATION * cue_path);
+  const RobotLimits& limits = context.request.limits;
+  return std::clamp(cue_ball / BALL_OVER_CUE, limits.min_speed, limits.max_speed);
+}
+
+/// The lowest elevation from the limits' minimum whose cue clears the balls and the rails, if any.
+std::optional<double> clearElevation(Stroke stroke, const PlanContext& context)
+{
+  const RobotLimits& limits = context.request.limits;
+  for (double theta = limits.min_theta; theta <= limits.max_theta + 1e-12; theta += ELEVATION_STEP)
+  {
+    stroke.theta = theta;
+    auto cue = placeStroke(stroke, context.cue_ball, context.radius());
+    if (cue && cueClears(cue.value(), context))
+      return theta;
+  }
+  return std::nullopt;
+}
+
+std::vector<int> pocketsToTry(const PlanContext& context)
+{
+  if (context.request.pocket >= 0)
+    return {context.request.pocket};
+  std::vector<int> all(context.configuration.table.pockets.size());
+  for (std::size_t k = 0; k < all.size(); ++k)
+    all[k] = static_cast<int>(k);
+  return all;
+}
+
+void addCandidate(const TableBall& target, int pocket, const PlanContext& context, CandidateSearch& search)
+{
+  ++search.pairs;
+  const Eigen::Vector2d object = target.state.position.head<2>();
+  const Eigen::Vector2d hole = context.configuration.table.pockets[static_cast<std::size_t>(pocket)].centre;
+  const Eigen::Vector2d line = (hole - object).normalized();
+  const Eigen::Vector2d ghost = object - 2.0 * context.radius() * line;
+  const Eigen::Vector2d aim = ghost - context.cue_ball;
+  const double cut = std::acos(std::clamp(aim.normalized().dot(line), -1.0, 1.0));
+  if (cut > MAX_CUT)
+  {
+    ++search.too_thin;
+    return;
+  }
+  if (!pathIsClear(context.cue_ball, ghost, target.id, context) || !pathIsClear(object, hole, target.id, context))
+  {
+    ++search.blocked;
+    return;
+  }
+  Stroke stroke;
+  stroke.phi = std::atan2(aim.y(), aim.x());
+  stroke.speed = initialSpeed(aim.norm(), (hole - object).norm(), cut, context);
+  const auto theta = clearElevation(stroke, context);
+  if (!theta)
+  {
+    ++search.cue_blocked;
+    return;
+  }
+  stroke.theta = *theta;
+  const double difficulty = (aim.norm() + (hole - object).norm()) / std::max(std::cos(cut), 0.05);
+  search.candidates.push_back({target.id, pocket, stroke, cut, difficulty});
+}
+}  // namespace
+
+CandidateSearch directPots(const PlanContext& context)
+{
+  CandidateSearch search;
+  for (const TableBall& ball : context.others)
+  {
+    if (!context.request.target.empty() && ball.id != context.request.target)
+      continue;
+    for (int pocket : pocketsToTry(context))
+      addCandidate(ball, pocket, context, search);
+  }
+  std::sort(search.candidates.begin(), search.candidates.end(),
+            [](const Candidate& a, const Candidate& b) { return a.difficulty < b.difficulty; });
+  return search;
+}
+
+}  // namespace planning
+}  // namespace billiard_shot_planner

@@ -1,0 +1,42 @@
+#pragma once
+
+// Candidate shots: where to aim before any refinement.
+#include <string>
+#include <vector>
+
+#include "plan_context.hpp"
+
+namespace billiard_shot_planner
+{
+namespace planning
+{
+struct Candidate
+{
+  std::string target;
+  int pocket = -1;
+  Stroke stroke;            ///< the ghost-ball aim, the lowest elevation whose cue clears, a centre hit
+  double cut = 0.0;         ///< rad, between the cue ball's path and the target's
+  double difficulty = 0.0;  ///< smaller is easier: the paths' length over the cut's cosine
+};
+
+/// Why the candidates are what they are (for the explanation of a plan that finds nothing).
+struct CandidateSearch
+{
+  std::vector<Candidate> candidates;  ///< easiest first
+  int pairs = 0;                      ///< target–pocket pairs considered
+  int blocked = 0;                    ///< of them, with a ball in the way of the target or the cue ball
+  int too_thin = 0;                   ///< with a cut beyond MAX_CUT
+  int cue_blocked = 0;                ///< where no elevation within the limits clears the cue
+};
+
+/// The thinnest cut tried: beyond it the object ball takes a sliver of the cue ball's speed and the throw's error
+/// dominates.
+constexpr double MAX_CUT = 80.0 * M_PI / 180.0;
+
+/// Direct pots by the ghost ball: for each target (the requested one, or every object ball) and pocket (the
+/// requested one, or every pocket) whose straight paths — cue ball to ghost ball, target to pocket — keep 2R from
+/// every other ball.
+CandidateSearch directPots(const PlanContext& context);
+
+}  // namespace planning
+}  // namespace billiard_shot_planner

@@ -1,0 +1,100 @@
+#include "noisy_rollouts.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <random>
+#include <thread>
+
+namespace billiard_shot_planner
+{
+namespace planning
+{
+namespace
+{
+constexpr double Z95 = 1.959963984540054;
+
+double wilsonBound(const PotEstimate& e, double sign)
+{
+  if (e.trials == 0)
+    return sign > 0.0 ? 1.0 : 0.0;
+  const double n = e.trials, p = e.probability(), z2 = Z95 * Z95;
+  const double centre = (p + z2 / (2.0 * n)) / (1.0 + z2 / n);
+  const double half = Z95 * std::sqrt(p * (1.0 - p) / n + z2 / (4.0 * n * n)) / (1.0 + z2 / n);
+  return std::clamp(centre + sign * half, 0.0, 1.0);
+}
+
+/// The stroke the robot plays when it means `nominal`: Gaussian errors of the noise's σ (offsets in metres, turned
+/// into ball radii).
+template <class Random>
+Stroke noisyStroke(const Stroke& nominal, const ExecutionNoise& noise, double radius, Random& random)
+{
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  Stroke stroke = nominal;
+  stroke.phi += noise.phi * gauss(random);
+  stroke.theta += noise.theta * gauss(random);
+  stroke.speed += noise.speed * gauss(random);
+  stroke.a += noise.a / radius * gauss(random);
+  stroke.b += noise.b / radius * gauss(random);
+  return stroke;
+}
+}  // namespace
+
+double PotEstimate::low() const
+{
+  return wilsonBound(*this, -1.0);
+}
+
+double PotEstimate::high() const
+{
+  return wilsonBound(*this, 1.0);
+}
+
+NoisyRollouts::NoisyRollouts(const Stroke& nominal, std::string target, int pocket, unsigned seed,
+                             const PlanContext& context)
+    : target_(std::move(target)), pocket_(pocket), context_(context)
+{
+  std::mt19937_64 random(seed);
+  const auto count = static_cast<std::size_t>(std::max(context.request.rollouts, 0));
+  strokes_.reserve(count);
+  for (std::size_t k = 0; k < count; ++k)
+    strokes_.push_back(noisyStroke(nominal, context.request.noise, context.radius(), random));
+}
+
+void NoisyRollouts::play(int count, int threads, Clock::time_point deadline)
+{
+  const std::size_t begin = next_, end = std::min(strokes_.size(), next_ + static_cast<std::size_t>(count));
+  std::vector<signed char> pots(end - begin, -1);  // −1: not played (the deadline came first)
+  std::atomic<std::size_t> claim{begin};
+  auto worker = [&]()
+  {
+    for (std::size_t k = claim++; k < end; k = claim++)
+    {
+      if (Clock::now() >= deadline)
+        return;
+      const Stroke& stroke = strokes_[k];
+      const bool pot = stroke.speed > 0.0 && evaluateStroke(stroke, target_, pocket_, context_).pots;
+      pots[k - begin] = pot ? 1 : 0;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < std::max(threads, 1); ++t)
+    pool.emplace_back(worker);
+  worker();
+  for (std::thread& thread : pool)
+    thread.join();
+  // Only the unbroken run of played rollouts counts: the estimate is the same whichever thread was late.
+  for (signed char pot : pots)
+  {
+    if (pot < 0)
+      break;
+    ++next_;
+    ++estimate_.trials;
+    estimate_.successes += pot;
+  }
+  if (next_ < end)
+    next_ = strokes_.size();  // out of time: no more rollouts of this shot
+}
+
+}  // namespace planning
+}  // namespace billiard_shot_planner

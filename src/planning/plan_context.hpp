@@ -1,0 +1,59 @@
+#pragma once
+
+// What every part of the planner shares: the request, the configuration its rollouts run with, where the cue ball
+// is and the other balls, and how one stroke is judged.
+#include <chrono>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "billiard_shot_planner/planning/shot_planner.hpp"
+
+namespace billiard_shot_planner
+{
+namespace planning
+{
+using Clock = std::chrono::steady_clock;
+
+/// Relative tolerance of the engine in the planner's rollouts (unless the configuration's is looser): far below the
+/// execution noise (a 0.5 mm offset changes the ball's velocity by 1e-2 relative) and two to three times faster
+/// than the default 1e-12 on cushion hits (bench/NOTES.md).
+constexpr double PLANNING_TOLERANCE = 1e-8;
+
+struct PlanContext
+{
+  const PlanRequest& request;
+  ShotConfiguration configuration;  ///< with the planning tolerance
+  Eigen::Vector2d cue_ball;         ///< its centre on the cloth
+  std::vector<TableBall> others;    ///< every ball but the cue ball, in the request's order
+  Clock::time_point deadline;
+
+  double radius() const { return configuration.ball_radius; }
+  bool pastDeadline() const { return Clock::now() >= deadline; }
+};
+
+/// Builds the context of a validated request.
+PlanContext makeContext(const PlanRequest& request, const ShotConfiguration& configuration);
+
+/// How one stroke aimed at `target` in `pocket` turned out.
+struct StrokeEvaluation
+{
+  bool valid = false;   ///< the stroke could be played and predicted
+  bool pots = false;    ///< the request's pot (target dropped, cue ball not, region and rules)
+  double margin = 0.0;  ///< m: inside (> 0) or outside (< 0) `pocket`'s capture circle by how much the target passes
+  std::optional<ShotOutcome> outcome;
+};
+
+/// A margin no real shot reaches: strokes that cannot be played or predicted.
+constexpr double UNPLAYABLE_MARGIN = -10.0;
+
+/// Plays `stroke` (no noise) and judges it; keeps the outcome when asked. A stroke whose cue would touch a ball or a
+/// rail, or that cannot be played, is not valid and has UNPLAYABLE_MARGIN.
+StrokeEvaluation evaluateStroke(const Stroke& stroke, const std::string& target, int pocket, const PlanContext& context,
+                                bool keep_outcome = false);
+
+/// Whether the cue, placed for the stroke, keeps clear of every other ball and passes above the rails.
+bool cueClears(const CuePlacement& cue, const PlanContext& context);
+
+}  // namespace planning
+}  // namespace billiard_shot_planner

@@ -1,0 +1,107 @@
+// One stroke played without noise and judged against the request's pot.
+#include <algorithm>
+#include <cmath>
+
+#include "plan_context.hpp"
+
+namespace billiard_shot_planner
+{
+namespace planning
+{
+namespace
+{
+/// Spacing of the samples on which a missing ball's closest approach to a pocket is measured: a ball at 3 m/s moves
+/// 1.5 cm between them, and the margin only has to rank near misses.
+constexpr double APPROACH_SAMPLE_SPACING = 0.005;
+
+int indexOf(const TableTrajectory& run, const std::string& id)
+{
+  const auto found = std::find(run.ids.begin(), run.ids.end(), id);
+  return found == run.ids.end() ? -1 : static_cast<int>(found - run.ids.begin());
+}
+
+const MotionEvent* pocketedEvent(const BallTrajectory& path)
+{
+  for (const MotionEvent& event : path.events)
+    if (event.type == MotionEventType::Pocketed)
+      return &event;
+  return nullptr;
+}
+
+/// How far inside the capture circle of pocket `index` the ball's path passes: for a ball that drops there, the
+/// capture radius less the distance from the pocket's centre to the line it enters along; otherwise (≤ 0) the
+/// capture radius less its closest approach.
+double pocketMargin(const BallTrajectory& path, const Table& table, int index)
+{
+  const Pocket& pocket = table.pockets[static_cast<std::size_t>(index)];
+  const MotionEvent* dropped = pocketedEvent(path);
+  if (dropped && dropped->pocket == index)
+  {
+    const Eigen::Vector2d to_centre = pocket.centre - dropped->state.position.head<2>();
+    const Eigen::Vector2d velocity = dropped->state.velocity.head<2>();
+    if (velocity.norm() == 0.0)
+      return pocket.radius - to_centre.norm();
+    const Eigen::Vector2d along = velocity.normalized();
+    return pocket.radius - std::abs(along.x() * to_centre.y() - along.y() * to_centre.x());
+  }
+  double closest = INFINITY;
+  for (const TrajectorySample& sample : path.sample(APPROACH_SAMPLE_SPACING))
+    closest = std::min(closest, (sample.state.position.head<2>() - pocket.centre).norm());
+  return pocket.radius - closest;
+}
+
+bool dropsIn(const BallTrajectory& path, int pocket)
+{
+  const MotionEvent* dropped = pocketedEvent(path);
+  return dropped && (pocket < 0 || dropped->pocket == pocket);
+}
+
+/// The request's pot, on a predicted table (the cue ball is ball 0).
+bool isPot(const TableTrajectory& run, int target, const PlanContext& context)
+{
+  const PlanRequest& request = context.request;
+  const BallTrajectory& cue_ball = run.balls[0];
+  if (target < 0 || !dropsIn(run.balls[static_cast<std::size_t>(target)], request.pocket))
+    return false;
+  if (cue_ball.outcome != MotionOutcome::Rest && cue_ball.outcome != MotionOutcome::AgainstCushion)
+    return false;  // dropped, off the table or unfinished
+  if (request.rules.target_first && firstContact(run, 0) != run.ids[static_cast<std::size_t>(target)])
+    return false;
+  if (request.rules.only_target)
+    for (std::size_t i = 1; i < run.balls.size(); ++i)
+      if (static_cast<int>(i) != target && run.balls[i].outcome == MotionOutcome::Pocketed)
+        return false;
+  if (request.cue_region)
+    return (cue_ball.finalState().position.head<2>() - request.cue_region->centre).norm() <= request.cue_region->radius;
+  return true;
+}
+}  // namespace
+
+StrokeEvaluation evaluateStroke(const Stroke& stroke, const std::string& target, int pocket, const PlanContext& context,
+                                bool keep_outcome)
+{
+  StrokeEvaluation evaluation;
+  evaluation.margin = UNPLAYABLE_MARGIN;
+  auto cue = placeStroke(stroke, context.cue_ball, context.radius());
+  if (!cue || !cueClears(cue.value(), context))
+    return evaluation;
+  auto outcome = predictShot(cue.value(), context.configuration, context.others);
+  if (!outcome)
+    return evaluation;
+  const TableTrajectory& run = outcome.value().table;
+  const int target_index = indexOf(run, target);
+  if (target_index < 0)
+    return evaluation;
+  evaluation.valid = true;
+  evaluation.pots = isPot(run, target_index, context);
+  evaluation.margin =
+      pocketMargin(run.balls[static_cast<std::size_t>(target_index)], context.configuration.table, pocket);
+  if (run.balls[0].outcome == MotionOutcome::Pocketed || run.balls[0].outcome == MotionOutcome::OffTable)
+    evaluation.margin = std::min(evaluation.margin, -context.configuration.table.pockets[0].radius);
+  if (keep_outcome)
+    evaluation.outcome = std::move(outcome).value();
+  return evaluation;
+}
+
+}  // namespace planning
+}  // namespace billiard_shot_planner

@@ -1,0 +1,201 @@
+#include "billiard_shot_planner/planning/shot_planner.hpp"
+
+#include <algorithm>
+#include <thread>
+
+#include "billiard_shot_planner/core/validation.hpp"
+#include "candidates.hpp"
+#include "noisy_rollouts.hpp"
+#include "refinement.hpp"
+
+namespace billiard_shot_planner
+{
+namespace planning
+{
+namespace
+{
+/// Shares of the budget: the refinement of candidates ends at the first, the ranking of the shots that pot by their
+/// rollouts at the second; the rest confirms the chosen shot's probability with rollouts of its own.
+constexpr double REFINEMENT_SHARE = 0.5;
+constexpr double RANKING_SHARE = 0.8;
+/// Seeds of the confirming rollouts: another stream than the ranking's.
+constexpr unsigned CONFIRMATION_SEED_OFFSET = 1000003u;
+/// How many shots that pot are ranked by rollouts, and how many rollouts each gets per round.
+constexpr std::size_t RANKED_SHOTS = 4;
+constexpr int ROLLOUT_BATCH = 25;
+
+int threadCount(const PlanRequest& request)
+{
+  if (request.threads > 0)
+    return request.threads;
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+Clock::time_point after(Clock::time_point start, double seconds)
+{
+  return start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+/// Refines candidates, easiest first, while the refinement's share of the budget lasts (the first always).
+std::vector<RefinedShot> refineCandidates(const CandidateSearch& search, const PlanContext& context,
+                                          Clock::time_point start, int& evaluations)
+{
+  const Clock::time_point until = after(start, REFINEMENT_SHARE * context.request.budget);
+  std::vector<RefinedShot> refined;
+  for (const Candidate& candidate : search.candidates)
+  {
+    if (!refined.empty() && Clock::now() >= until)
+      break;
+    refined.push_back(refine(candidate, context, refined.empty() ? context.deadline : until));
+    evaluations += refined.back().evaluations;
+  }
+  std::stable_sort(refined.begin(), refined.end(),
+                   [](const RefinedShot& a, const RefinedShot& b)
+                   {
+                     return a.evaluation.pots > b.evaluation.pots ||
+                            (a.evaluation.pots == b.evaluation.pots && a.evaluation.margin > b.evaluation.margin);
+                   });
+  return refined;
+}
+
+PlannedShot plannedShot(const RefinedShot& shot, const PlanContext& context)
+{
+  PlannedShot planned;
+  planned.stroke = shot.candidate.stroke;
+  planned.cue = placeStroke(planned.stroke, context.cue_ball, context.radius()).value();
+  planned.target = shot.candidate.target;
+  planned.pocket = shot.candidate.pocket;
+  planned.margin = shot.evaluation.margin;
+  return planned;
+}
+
+void setEstimate(PlannedShot& shot, const PotEstimate& estimate)
+{
+  shot.success_probability = estimate.probability();
+  shot.confidence_low = estimate.low();
+  shot.confidence_high = estimate.high();
+  shot.rollouts = estimate.trials;
+}
+
+/// Rollouts of the shots that pot, in rounds, until each has the request's count or `until`; then the shots in order
+/// of their estimated probability (the margin breaks ties).
+std::vector<PlannedShot> rankByRollouts(const std::vector<RefinedShot>& refined, const PlanContext& context,
+                                        Clock::time_point until, int& evaluations)
+{
+  std::vector<PlannedShot> shots;
+  std::vector<NoisyRollouts> rollouts;
+  for (std::size_t k = 0; k < refined.size() && shots.size() < RANKED_SHOTS && refined[k].evaluation.pots; ++k)
+  {
+    shots.push_back(plannedShot(refined[k], context));
+    rollouts.emplace_back(shots.back().stroke, shots.back().target, context.request.pocket,
+                          context.request.seed + static_cast<unsigned>(k), context);
+  }
+  const int threads = threadCount(context.request);
+  for (bool more = true; more && Clock::now() < until;)
+  {
+    more = false;
+    for (NoisyRollouts& shot : rollouts)
+      if (!shot.finished())
+      {
+        shot.play(ROLLOUT_BATCH, threads, until);
+        more = true;
+      }
+  }
+  for (std::size_t k = 0; k < shots.size(); ++k)
+  {
+    setEstimate(shots[k], rollouts[k].estimate());
+    evaluations += rollouts[k].estimate().trials;
+  }
+  std::stable_sort(shots.begin(), shots.end(),
+                   [](const PlannedShot& a, const PlannedShot& b)
+                   {
+                     return a.success_probability > b.success_probability ||
+                            (a.success_probability == b.success_probability && a.margin > b.margin);
+                   });
+  return shots;
+}
+
+/// The chosen shot's probability from rollouts of its own: the highest of several noisy estimates is biased upwards
+/// (the winner's curse), an estimate from other draws is not. Kept only when some were played in time.
+void confirm(PlannedShot& best, const PlanContext& context, int& evaluations)
+{
+  NoisyRollouts rollouts(best.stroke, best.target, context.request.pocket,
+                         context.request.seed + CONFIRMATION_SEED_OFFSET, context);
+  const int threads = threadCount(context.request);
+  while (!rollouts.finished() && !context.pastDeadline())
+    rollouts.play(ROLLOUT_BATCH, threads, context.deadline);
+  evaluations += rollouts.estimate().trials;
+  if (rollouts.estimate().trials > 0)
+    setEstimate(best, rollouts.estimate());
+}
+
+std::string noPotExplanation(const CandidateSearch& search, const std::vector<RefinedShot>& refined)
+{
+  std::string text = std::to_string(search.pairs) + " target–pocket pairs: " + std::to_string(search.blocked) +
+                     " with a ball in the way, " + std::to_string(search.too_thin) + " cut thinner than 80°, " +
+                     std::to_string(search.cue_blocked) + " where the cue cannot clear the balls and rails";
+  if (refined.empty())
+    return "no direct shot to try (" + text + ")";
+  const RefinedShot& closest = refined.front();
+  return "no shot found that pots (" + text + "; " + std::to_string(refined.size()) +
+         " refined): the closest, ball \"" + closest.candidate.target + "\" into pocket " +
+         std::to_string(closest.candidate.pocket) + ", misses by " + std::to_string(-closest.evaluation.margin) + " m";
+}
+}  // namespace
+
+PlanContext makeContext(const PlanRequest& request, const ShotConfiguration& configuration)
+{
+  PlanContext context{request, configuration, Eigen::Vector2d::Zero(), {}, {}};
+  context.configuration.solver.relative_tolerance =
+      std::max(configuration.solver.relative_tolerance, PLANNING_TOLERANCE);
+  context.configuration.solver.absolute_tolerance =
+      std::max(configuration.solver.absolute_tolerance, 1e-2 * PLANNING_TOLERANCE);
+  for (const TableBall& ball : request.balls)
+    if (ball.id == request.cue_ball)
+      context.cue_ball = ball.state.position.head<2>();
+    else
+      context.others.push_back(ball);
+  return context;
+}
+
+}  // namespace planning
+
+Expected<ShotPlan> planShot(const PlanRequest& request, const ShotConfiguration& configuration)
+{
+  using namespace planning;
+  const Clock::time_point start = Clock::now();
+  if (Status status = validate(request, configuration); !status)
+    return status.error();
+  PlanContext context = makeContext(request, configuration);
+  context.deadline = after(start, request.budget);
+  ShotPlan plan;
+  const CandidateSearch search = directPots(context);
+  const std::vector<RefinedShot> refined = refineCandidates(search, context, start, plan.evaluations);
+  std::vector<PlannedShot> ranked =
+      rankByRollouts(refined, context, after(start, RANKING_SHARE * request.budget), plan.evaluations);
+  plan.found = !ranked.empty();
+  if (plan.found)
+  {
+    plan.best = ranked.front();
+    if (ranked.size() > 1)
+      confirm(plan.best, context, plan.evaluations);
+    plan.alternatives.assign(ranked.begin() + 1, ranked.end());
+  }
+  else
+  {
+    plan.explanation = noPotExplanation(search, refined);
+    if (!refined.empty())
+      plan.best = plannedShot(refined.front(), context);
+  }
+  if (plan.found || !refined.empty())
+  {
+    // The answer's prediction at the caller's own tolerance.
+    auto outcome = predictShot(plan.best.cue, configuration, context.others);
+    if (outcome)
+      plan.outcome = std::move(outcome).value();
+  }
+  plan.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return plan;
+}
+
+}  // namespace billiard_shot_planner
