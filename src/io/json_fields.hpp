@@ -60,9 +60,12 @@ Expected<json> solveBallTable(const json& request, const SolverOptions& options)
 Expected<json> solveBallMotion(const json& request, const SolverOptions& options);
 Expected<json> solveShot(const json& request, const SolverOptions& options);
 Expected<json> solveTableShot(const json& request, const SolverOptions& options);
+Expected<json> solvePlanShot(const json& request, const SolverOptions& options);
 
 /// The cue strike fields of a request (json_strike.cpp), the strike solved, and its result as JSON.
 Expected<CueStrike> cueStrikeFromJson(const json& request);
+/// The same without the cue (its direction, speed and hit point): masses, contacts and the stiffness ratio.
+Expected<CueStrike> strikePhysicsFromJson(const json& request);
 struct StrikeAnswer
 {
   CueStrike strike;

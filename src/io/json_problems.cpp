@@ -22,6 +22,7 @@ const std::pair<const char*, Solver> PROBLEMS[] = {
     {"ball_motion", json_io::solveBallMotion},
     {"shot", json_io::solveShot},
     {"table_shot", json_io::solveTableShot},
+    {"plan_shot", json_io::solvePlanShot},
 };
 
 /// `path` extended by one step: a key of an object, or an index of an array.

@@ -117,7 +117,7 @@ Status readCueAndHitPoint(const json& request, CueStrike& strike)
 }
 }  // namespace
 
-Expected<CueStrike> cueStrikeFromJson(const json& request)
+Expected<CueStrike> strikePhysicsFromJson(const json& request)
 {
   CueStrike strike;
   if (Status status = readNumbers(request,
@@ -138,7 +138,16 @@ Expected<CueStrike> cueStrikeFromJson(const json& request)
       return surface.error();
     *target = surface.value();
   }
-  Status cue = request.contains("cue") ? readStroke(request, strike) : readCueAndHitPoint(request, strike);
+  return strike;
+}
+
+Expected<CueStrike> cueStrikeFromJson(const json& request)
+{
+  auto strike = strikePhysicsFromJson(request);
+  if (!strike)
+    return strike;
+  Status cue =
+      request.contains("cue") ? readStroke(request, strike.value()) : readCueAndHitPoint(request, strike.value());
   if (!cue)
     return cue.error();
   return strike;

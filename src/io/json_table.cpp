@@ -5,7 +5,7 @@
 
 #include "billiard_shot_planner/motion/table_simulation.hpp"
 #include "json_fields.hpp"
-#include "json_motion.hpp"
+#include "json_table.hpp"
 
 namespace billiard_shot_planner
 {
@@ -29,37 +29,6 @@ Expected<TableBall> tableBall(const json& fields, std::size_t i, double radius)
   if (!state)
     return state.error();
   return TableBall{fields.at("id").get<std::string>(), state.value()};
-}
-
-Expected<std::vector<TableBall>> tableBalls(const json& request, double radius)
-{
-  if (!request.contains("balls") || !request.at("balls").is_array())
-    return invalidArgument("balls", "is required: an array of {\"id\", \"position\": [x, y]}");
-  std::vector<TableBall> balls;
-  const json& list = request.at("balls");
-  for (std::size_t i = 0; i < list.size() && i <= MAX_TABLE_BALLS; ++i)
-  {
-    auto ball = tableBall(list[i], i, radius);
-    if (!ball)
-      return ball.error();
-    balls.push_back(ball.value());
-  }
-  return balls;
-}
-
-Expected<std::size_t> cueBallIndex(const json& request, const std::vector<TableBall>& balls)
-{
-  std::string id = "cue";
-  if (request.contains("cue_ball"))
-  {
-    if (!request.at("cue_ball").is_string())
-      return invalidArgument("cue_ball", "must be the id of a ball");
-    id = request.at("cue_ball").get<std::string>();
-  }
-  const auto found = std::find_if(balls.begin(), balls.end(), [&](const TableBall& b) { return b.id == id; });
-  if (found == balls.end())
-    return invalidArgument("cue_ball", "no ball has the id \"" + id + "\"");
-  return static_cast<std::size_t>(found - balls.begin());
 }
 
 /// Samples at k·spacing up to the table's duration, the same instants for every ball, plus the ball's own events.
@@ -101,6 +70,47 @@ json firstContactJson(const TableTrajectory& run, std::size_t cue)
   return id.empty() ? json(nullptr) : json(id);
 }
 
+Expected<bool> wantsSamples(const json& request)
+{
+  if (!request.contains("samples"))
+    return false;
+  if (!request.at("samples").is_boolean())
+    return invalidArgument("samples", "must be true or false");
+  return request.at("samples").get<bool>();
+}
+}  // namespace
+
+Expected<std::vector<TableBall>> tableBalls(const json& request, double radius)
+{
+  if (!request.contains("balls") || !request.at("balls").is_array())
+    return invalidArgument("balls", "is required: an array of {\"id\", \"position\": [x, y]}");
+  std::vector<TableBall> balls;
+  const json& list = request.at("balls");
+  for (std::size_t i = 0; i < list.size() && i <= MAX_TABLE_BALLS; ++i)
+  {
+    auto ball = tableBall(list[i], i, radius);
+    if (!ball)
+      return ball.error();
+    balls.push_back(ball.value());
+  }
+  return balls;
+}
+
+Expected<std::size_t> cueBallIndex(const json& request, const std::vector<TableBall>& balls)
+{
+  std::string id = "cue";
+  if (request.contains("cue_ball"))
+  {
+    if (!request.at("cue_ball").is_string())
+      return invalidArgument("cue_ball", "must be the id of a ball");
+    id = request.at("cue_ball").get<std::string>();
+  }
+  const auto found = std::find_if(balls.begin(), balls.end(), [&](const TableBall& b) { return b.id == id; });
+  if (found == balls.end())
+    return invalidArgument("cue_ball", "no ball has the id \"" + id + "\"");
+  return static_cast<std::size_t>(found - balls.begin());
+}
+
 json tableJson(const TableTrajectory& run, std::size_t cue, const MotionSetup& setup, bool samples)
 {
   json balls = json::array(), pocketed = json::array(), collisions = json::array();
@@ -127,16 +137,6 @@ json tableJson(const TableTrajectory& run, std::size_t cue, const MotionSetup& s
               {"collisions", collisions},
               {"duration", run.duration()}};
 }
-
-Expected<bool> wantsSamples(const json& request)
-{
-  if (!request.contains("samples"))
-    return false;
-  if (!request.at("samples").is_boolean())
-    return invalidArgument("samples", "must be true or false");
-  return request.at("samples").get<bool>();
-}
-}  // namespace
 
 Expected<json> solveTableShot(const json& request, const SolverOptions& options)
 {

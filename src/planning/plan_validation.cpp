@@ -60,6 +60,8 @@ Status checkBalls(const PlanRequest& r, const ShotConfiguration& c)
   { return std::any_of(r.balls.begin(), r.balls.end(), [&](const TableBall& b) { return b.id == id; }); };
   if (!has(r.cue_ball))
     return invalidArgument("cue_ball", "no ball has the id \"" + r.cue_ball + "\"");
+  if (r.cue_ball != CUE_BALL_ID && has(CUE_BALL_ID))
+    return invalidArgument("balls", std::string("only the cue ball may be called \"") + CUE_BALL_ID + "\"");
   if (r.balls.size() < 2)
     return invalidArgument("balls", "there is no object ball to pot");
   if (!r.target.empty() && (!has(r.target) || r.target == r.cue_ball))

@@ -523,3 +523,89 @@ TEST(ImpactSolve, TableShotBadInputNamesTheBall)
   friction["ball_ball"] = {{"friction_model", "magic"}};
   expectField(friction, "ball_ball.friction_model");
 }
+
+namespace
+{
+/// plan_shot on the straight-in layout of straightInShot, with a third ball elsewhere.
+nlohmann::json planRequest()
+{
+  auto request = straightInShot();
+  request.erase("cue");
+  request["problem"] = "plan_shot";
+  request["balls"].push_back({{"id", "two"}, {"position", {-0.5, -0.3}}});
+  request["budget_ms"] = 2000;
+  request["seed"] = 7;
+  return request;
+}
+}  // namespace
+
+// The plan pots: replayed as a table_shot from the answer's own cue, the target drops in the answer's pocket and
+// the cue ball stays on the table; the answer carries every field other tools read.
+TEST(ImpactSolve, PlanShotAnswersAShotThatPotsWhenReplayed)
+{
+  const SolverRun run = runSolver(planRequest().dump());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto plan = nlohmann::json::parse(run.output);
+  ASSERT_TRUE(plan["found"].get<bool>());
+  for (const char* key : {"target", "pocket", "cue", "cue_pose", "success_probability", "confidence_interval",
+                          "evaluations", "time_ms", "outcome", "alternatives"})
+    EXPECT_TRUE(plan.contains(key)) << key;
+  const double p = plan["success_probability"].get<double>();
+  EXPECT_GE(p, plan["confidence_interval"][0].get<double>());
+  EXPECT_LE(p, plan["confidence_interval"][1].get<double>());
+  auto replay = straightInShot();
+  replay["balls"].push_back({{"id", "two"}, {"position", {-0.5, -0.3}}});
+  replay["cue"] = plan["cue"];
+  const SolverRun shot = runSolver(replay.dump());
+  ASSERT_EQ(shot.exit_code, 0) << shot.output;
+  const auto out = nlohmann::json::parse(shot.output);
+  const std::string target = plan["target"];
+  for (const auto& ball : out["balls"])
+  {
+    if (ball["id"] == target)
+    {
+      EXPECT_EQ(ball["pocket"], plan["pocket"]);
+    }
+    if (ball["id"] == "cue")
+    {
+      EXPECT_NE(ball["outcome"], "pocketed");
+    }
+  }
+}
+
+TEST(ImpactSolve, PlanShotBadInputNamesTheField)
+{
+  auto expectField = [](nlohmann::json request, const std::string& field)
+  {
+    const SolverRun run = runSolver(request.dump());
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_NE(run.output.find(field), std::string::npos) << run.output;
+  };
+  auto target = planRequest();
+  target["target"] = "seven";
+  expectField(target, "target");
+  auto pocket = planRequest();
+  pocket["pocket"] = 9;
+  expectField(pocket, "pocket");
+  auto speed = planRequest();
+  speed["limits"] = {{"speed", {3, 2}}};
+  expectField(speed, "limits.speed");
+  auto theta = planRequest();
+  theta["limits"] = {{"theta_deg", {10, 95}}};
+  expectField(theta, "limits.theta_deg");
+  auto noise = planRequest();
+  noise["noise"] = {{"phi_deg", -0.1}};
+  expectField(noise, "noise.phi_deg");
+  auto budget = planRequest();
+  budget["budget_ms"] = 0;
+  expectField(budget, "budget_ms");
+  auto in_pocket = planRequest();
+  in_pocket["balls"][0]["position"] = {1.26, 0.63};
+  expectField(in_pocket, "balls[0].position");
+  auto nan = planRequest();
+  nan["balls"][1]["position"] = {"x", 0.4};
+  expectField(nan, "balls[1].position");
+  auto seed = planRequest();
+  seed["seed"] = -1;
+  expectField(seed, "seed");
+}
