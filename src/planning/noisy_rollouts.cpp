@@ -65,16 +65,20 @@ void NoisyRollouts::play(int count, int threads, Clock::time_point deadline)
 {
   const std::size_t begin = next_, end = std::min(strokes_.size(), next_ + static_cast<std::size_t>(count));
   std::vector<signed char> pots(end - begin, -1);  // −1: not played (the deadline came first)
+  std::vector<Eigen::Vector2d> ends(end - begin, Eigen::Vector2d::Zero());
   std::atomic<std::size_t> claim{begin};
   auto worker = [&]()
   {
     for (std::size_t k = claim++; k < end; k = claim++)
     {
-      if (Clock::now() >= deadline)
+      if (context_.shouldStop(deadline))
         return;
       const Stroke& stroke = strokes_[k];
-      const bool pot = stroke.speed > 0.0 && evaluateStroke(stroke, target_, pocket_, context_).pots;
-      pots[k - begin] = pot ? 1 : 0;
+      StrokeEvaluation played;
+      if (stroke.speed > 0.0)
+        played = evaluateStroke(stroke, target_, pocket_, context_);
+      pots[k - begin] = played.pots ? 1 : 0;
+      ends[k - begin] = played.valid ? played.target_end : Eigen::Vector2d::Constant(NAN);
     }
   };
   std::vector<std::thread> pool;
@@ -84,13 +88,13 @@ void NoisyRollouts::play(int count, int threads, Clock::time_point deadline)
   for (std::thread& thread : pool)
     thread.join();
   // Only the unbroken run of played rollouts counts: the estimate is the same whichever thread was late.
-  for (signed char pot : pots)
+  for (std::size_t k = 0; k < pots.size() && pots[k] >= 0; ++k)
   {
-    if (pot < 0)
-      break;
     ++next_;
     ++estimate_.trials;
-    estimate_.successes += pot;
+    estimate_.successes += pots[k];
+    if (ends[k].allFinite())
+      end_points_.push_back(ends[k]);
   }
   if (next_ < end)
     next_ = strokes_.size();  // out of time: no more rollouts of this shot

@@ -33,6 +33,8 @@ public:
   void play(int count, int threads, Clock::time_point deadline);
   bool finished() const { return next_ >= strokes_.size(); }
   const PotEstimate& estimate() const { return estimate_; }
+  /// Where the target ended in each rollout played.
+  const std::vector<Eigen::Vector2d>& targetEndPoints() const { return end_points_; }
 
 private:
   std::vector<Stroke> strokes_;
@@ -41,6 +43,7 @@ private:
   const PlanContext& context_;
   std::size_t next_ = 0;
   PotEstimate estimate_;
+  std::vector<Eigen::Vector2d> end_points_;
 };
 
 }  // namespace planning

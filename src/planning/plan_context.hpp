@@ -29,7 +29,12 @@ struct PlanContext
   Clock::time_point deadline;
 
   double radius() const { return configuration.ball_radius; }
-  bool pastDeadline() const { return Clock::now() >= deadline; }
+  /// Past `until` (by default the deadline), or asked to stop by the caller.
+  bool shouldStop(Clock::time_point until) const
+  {
+    return Clock::now() >= until || (request.hooks.stop && request.hooks.stop());
+  }
+  bool pastDeadline() const { return shouldStop(deadline); }
 };
 
 /// Builds the context of a validated request.
@@ -41,16 +46,16 @@ struct StrokeEvaluation
   bool valid = false;   ///< the stroke could be played and predicted
   bool pots = false;    ///< the request's pot (target dropped, cue ball not, region and rules)
   double margin = 0.0;  ///< m: inside (> 0) or outside (< 0) `pocket`'s capture circle by how much the target passes
-  std::optional<ShotOutcome> outcome;
+  Eigen::Vector2d target_end = Eigen::Vector2d::Zero();  ///< where the target stopped or dropped
 };
 
 /// A margin no real shot reaches: strokes that cannot be played or predicted.
 constexpr double UNPLAYABLE_MARGIN = -10.0;
 
-/// Plays `stroke` (no noise) and judges it; keeps the outcome when asked. A stroke whose cue would touch a ball or a
+/// Plays `stroke` (no noise) and judges it. A stroke whose cue would touch a ball or a
 /// rail, or that cannot be played, is not valid and has UNPLAYABLE_MARGIN.
-StrokeEvaluation evaluateStroke(const Stroke& stroke, const std::string& target, int pocket, const PlanContext& context,
-                                bool keep_outcome = false);
+StrokeEvaluation evaluateStroke(const Stroke& stroke, const std::string& target, int pocket,
+                                const PlanContext& context);
 
 /// Whether the cue, placed for the stroke, keeps clear of every other ball and passes above the rails.
 bool cueClears(const CuePlacement& cue, const PlanContext& context);

@@ -21,7 +21,7 @@ Status checkRange(double low, double high, const std::string& field)
   return {};
 }
 
-Status checkLimits(const RobotLimits& l)
+Status checkLimitsOf(const RobotLimits& l)
 {
   return firstError(
       {checkRange(l.min_theta, l.max_theta, "limits.theta"),
@@ -34,7 +34,7 @@ Status checkLimits(const RobotLimits& l)
        requireNonNegative(l.rail_height, "limits.rail_height")});
 }
 
-Status checkNoise(const ExecutionNoise& n)
+Status checkNoiseOf(const ExecutionNoise& n)
 {
   return firstError({requireNonNegative(n.phi, "noise.phi"), requireNonNegative(n.theta, "noise.theta"),
                      requireNonNegative(n.speed, "noise.speed"), requireNonNegative(n.a, "noise.a"),
@@ -86,9 +86,19 @@ Status checkSearch(const PlanRequest& r, const ShotConfiguration& c)
 }
 }  // namespace
 
+Status validate(const RobotLimits& limits)
+{
+  return checkLimitsOf(limits);
+}
+
+Status validate(const ExecutionNoise& noise)
+{
+  return checkNoiseOf(noise);
+}
+
 Status validate(const PlanRequest& request, const ShotConfiguration& configuration)
 {
-  return firstError({validate(configuration), checkLimits(request.limits), checkNoise(request.noise),
+  return firstError({validate(configuration), validate(request.limits), validate(request.noise),
                      checkSearch(request, configuration), checkBalls(request, configuration)});
 }
 

@@ -35,7 +35,7 @@ struct Search
 double margin(const std::vector<double>& x, std::vector<double>& /*gradient*/, void* data)
 {
   Search& search = *static_cast<Search*>(data);
-  if (Clock::now() >= search.deadline)
+  if (search.context.shouldStop(search.deadline))
     throw nlopt::forced_stop();
   Stroke stroke = search.best.candidate.stroke;
   stroke.phi = x[0];

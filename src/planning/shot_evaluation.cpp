@@ -77,8 +77,7 @@ bool isPot(const TableTrajectory& run, int target, const PlanContext& context)
 }
 }  // namespace
 
-StrokeEvaluation evaluateStroke(const Stroke& stroke, const std::string& target, int pocket, const PlanContext& context,
-                                bool keep_outcome)
+StrokeEvaluation evaluateStroke(const Stroke& stroke, const std::string& target, int pocket, const PlanContext& context)
 {
   StrokeEvaluation evaluation;
   evaluation.margin = UNPLAYABLE_MARGIN;
@@ -94,12 +93,11 @@ StrokeEvaluation evaluateStroke(const Stroke& stroke, const std::string& target,
     return evaluation;
   evaluation.valid = true;
   evaluation.pots = isPot(run, target_index, context);
+  evaluation.target_end = run.balls[static_cast<std::size_t>(target_index)].finalState().position.head<2>();
   evaluation.margin =
       pocketMargin(run.balls[static_cast<std::size_t>(target_index)], context.configuration.table, pocket);
   if (run.balls[0].outcome == MotionOutcome::Pocketed || run.balls[0].outcome == MotionOutcome::OffTable)
     evaluation.margin = std::min(evaluation.margin, -context.configuration.table.pockets[0].radius);
-  if (keep_outcome)
-    evaluation.outcome = std::move(outcome).value();
   return evaluation;
 }
 

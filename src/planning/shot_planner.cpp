@@ -36,18 +36,27 @@ Clock::time_point after(Clock::time_point start, double seconds)
   return start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
 }
 
+void report(const PlanContext& context, const PlanProgress& progress)
+{
+  if (context.request.hooks.progress)
+    context.request.hooks.progress(progress);
+}
+
 /// Refines candidates, easiest first, while the refinement's share of the budget lasts (the first always).
 std::vector<RefinedShot> refineCandidates(const CandidateSearch& search, const PlanContext& context,
                                           Clock::time_point start, int& evaluations)
 {
   const Clock::time_point until = after(start, REFINEMENT_SHARE * context.request.budget);
   std::vector<RefinedShot> refined;
+  int pots = 0;
   for (const Candidate& candidate : search.candidates)
   {
-    if (!refined.empty() && Clock::now() >= until)
+    if (!refined.empty() && context.shouldStop(until))
       break;
     refined.push_back(refine(candidate, context, refined.empty() ? context.deadline : until));
     evaluations += refined.back().evaluations;
+    pots += refined.back().evaluation.pots;
+    report(context, {evaluations, pots, 0.0});
   }
   std::stable_sort(refined.begin(), refined.end(),
                    [](const RefinedShot& a, const RefinedShot& b)
@@ -69,12 +78,14 @@ PlannedShot plannedShot(const RefinedShot& shot, const PlanContext& context)
   return planned;
 }
 
-void setEstimate(PlannedShot& shot, const PotEstimate& estimate)
+void setEstimate(PlannedShot& shot, const NoisyRollouts& rollouts)
 {
+  const PotEstimate& estimate = rollouts.estimate();
   shot.success_probability = estimate.probability();
   shot.confidence_low = estimate.low();
   shot.confidence_high = estimate.high();
   shot.rollouts = estimate.trials;
+  shot.target_end_points = rollouts.targetEndPoints();
 }
 
 /// Rollouts of the shots that pot, in rounds, until each has the request's count or `until`; then the shots in order
@@ -91,21 +102,27 @@ std::vector<PlannedShot> rankByRollouts(const std::vector<RefinedShot>& refined,
                           context.request.seed + static_cast<unsigned>(k), context);
   }
   const int threads = threadCount(context.request);
-  for (bool more = true; more && Clock::now() < until;)
+  int played = 0;
+  for (bool more = true; more && !context.shouldStop(until);)
   {
     more = false;
+    double best = 0.0;
     for (NoisyRollouts& shot : rollouts)
+    {
       if (!shot.finished())
       {
+        const int before = shot.estimate().trials;
         shot.play(ROLLOUT_BATCH, threads, until);
+        played += shot.estimate().trials - before;
         more = true;
       }
+      best = std::max(best, shot.estimate().probability());
+    }
+    report(context, {evaluations + played, static_cast<int>(shots.size()), best});
   }
   for (std::size_t k = 0; k < shots.size(); ++k)
-  {
-    setEstimate(shots[k], rollouts[k].estimate());
-    evaluations += rollouts[k].estimate().trials;
-  }
+    setEstimate(shots[k], rollouts[k]);
+  evaluations += played;
   std::stable_sort(shots.begin(), shots.end(),
                    [](const PlannedShot& a, const PlannedShot& b)
                    {
@@ -126,7 +143,7 @@ void confirm(PlannedShot& best, const PlanContext& context, int& evaluations)
     rollouts.play(ROLLOUT_BATCH, threads, context.deadline);
   evaluations += rollouts.estimate().trials;
   if (rollouts.estimate().trials > 0)
-    setEstimate(best, rollouts.estimate());
+    setEstimate(best, rollouts);
 }
 
 std::string noPotExplanation(const CandidateSearch& search, const std::vector<RefinedShot>& refined)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,6 +52,22 @@ struct PlanRules
   bool only_target = false;   ///< no ball but the target may drop
 };
 
+/// How far a plan has come, for a caller that reports progress.
+struct PlanProgress
+{
+  int evaluations = 0;            ///< shots simulated so far
+  int shots_that_pot = 0;         ///< refined shots that pot without noise
+  double best_probability = 0.0;  ///< the best pot probability estimated so far
+};
+
+/// Optional calls out of a running plan: `progress` after each refined candidate and each round of rollouts, and
+/// `stop`, asked as often, which ends the plan early with the best found so far (a preempted action goal).
+struct PlanHooks
+{
+  std::function<void(const PlanProgress&)> progress;
+  std::function<bool()> stop;
+};
+
 /// What to plan: a pot means that the target drops (in `pocket`, when one is named) and the cue ball does not (and
 /// the cue ball stops in `cue_region`, when one is given, and the rules hold).
 struct PlanRequest
@@ -67,6 +84,7 @@ struct PlanRequest
   unsigned seed = 1;    ///< of the noisy rollouts: the same request and seed give the same plan
   int rollouts = 200;   ///< noisy rollouts of each shot that pots, to estimate its probability
   int threads = 0;      ///< rollouts in parallel; 0: one per hardware thread
+  PlanHooks hooks;
 };
 
 /// A shot and how likely it is to pot under the noise.
@@ -82,6 +100,8 @@ struct PlannedShot
   double success_probability = 0.0;
   double confidence_low = 0.0, confidence_high = 0.0;  ///< Wilson's 95 % interval
   int rollouts = 0;
+  /// Where the target ended in each rollout (pocketed balls where they dropped): the spread of the outcomes.
+  std::vector<Eigen::Vector2d> target_end_points;
 };
 
 struct ShotPlan
@@ -96,6 +116,10 @@ struct ShotPlan
   int evaluations = 0;                    ///< shots simulated
   double seconds = 0.0;
 };
+
+/// Checks of the parts a node reads from its parameters; errors name the field ("limits.speed", "noise.phi").
+Status validate(const RobotLimits& limits);
+Status validate(const ExecutionNoise& noise);
 
 /// Checks the request against the configuration; errors name the field ("target", "limits.speed", "noise.phi",
 /// "balls[2].position", …).
