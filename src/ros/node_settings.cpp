@@ -99,6 +99,10 @@ Expected<NodeSettings> readSettings(const ros::NodeHandle& pnh)
     return status.error();
   if (Status status = firstError({checkNodeSettings(s), namedAsParameter(validate(s.shot))}); !status)
     return status.error();
+  auto planning = readPlanningSettings(pnh);
+  if (!planning)
+    return planning.error();
+  s.planning = planning.value();
   return s;
 }
 

@@ -6,6 +6,7 @@
 
 #include "billiard_shot_planner/core/expected.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
+#include "planning_settings.hpp"
 
 namespace billiard_shot_planner
 {
@@ -17,6 +18,7 @@ struct NodeSettings
   double sample_spacing = 0.01;        ///< s, between trajectory samples in messages and markers
   int threads = 2;                     ///< service threads
   ShotConfiguration shot;
+  PlanningSettings planning;
 };
 
 /// Reads every parameter (absent ones keep their defaults) and validates them. The error names the parameter.

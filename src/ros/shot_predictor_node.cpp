@@ -86,6 +86,8 @@ ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& pri
   tuning_server_->setCallback([this](ShotPredictorConfig& tuning, uint32_t level) { retune(tuning, level); });
   table_subscriber_ = private_node.subscribe("table_state", 1, &ShotPredictorNode::storeTable, this);
   service_ = private_node.advertiseService("predict_shot", &ShotPredictorNode::predict, this);
+  planner_ = std::make_unique<ShotPlannerServer>(private_node, plannerAccess(), settings_.target_frame,
+                                                 settings_.sample_spacing, marker_publisher_);
   ROS_INFO("predict_shot ready: answers in frame '%s'", settings_.target_frame.c_str());
 }
 
@@ -105,20 +107,73 @@ void ShotPredictorNode::retune(ShotPredictorConfig& tuning, uint32_t /*level*/)
   tuning.rejected.clear();
 }
 
-Expected<ShotConfiguration> ShotPredictorNode::configurationFor(const PredictShot::Request& request) const
+Expected<ShotConfiguration> ShotPredictorNode::configurationWith(const std::vector<std::string>& names,
+                                                                 const std::vector<double>& values,
+                                                                 PlanningSettings* planning) const
 {
   ShotConfiguration configuration;
   {
     std::lock_guard<std::mutex> lock(configuration_mutex_);
     configuration = settings_.shot;
+    if (planning)
+      *planning = settings_.planning;
   }
-  for (std::size_t i = 0; i < request.override_names.size(); ++i)
+  for (std::size_t i = 0; i < names.size(); ++i)
   {
-    const std::string& name = request.override_names[i];
-    if (Status status = applyOverride(configuration, configurationPath(name), request.override_values[i]); !status)
+    if (planning)
+    {
+      auto applied = applyPlanningOverride(*planning, names[i], values[i]);
+      if (!applied)
+        return Error{applied.error().code, "override " + applied.error().field, applied.error().message};
+      if (applied.value())
+        continue;
+    }
+    if (Status status = applyOverride(configuration, configurationPath(names[i]), values[i]); !status)
       return Error{status.error().code, "override " + parameterName(status.error().field), status.error().message};
   }
   return configuration;
+}
+
+Expected<Eigen::Vector2d> ShotPredictorNode::placePoint(const geometry_msgs::PointStamped& point,
+                                                        const std::string& field) const
+{
+  const auto& p = point.point;
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    return invalidArgument(field + ".point", "contains NaN or infinite values");
+  if (point.header.frame_id.empty())
+    return invalidArgument(field + ".header.frame_id", "is empty: give the frame the point is expressed in");
+  try
+  {
+    const auto placed = buffer_.transform(point, settings_.target_frame, ros::Duration(settings_.tf_timeout));
+    return Eigen::Vector2d(placed.point.x, placed.point.y);
+  }
+  catch (const tf2::TransformException& e)
+  {
+    return invalidArgument(field + ".header.frame_id", std::string("no transform to the table frame: ") + e.what());
+  }
+}
+
+ShotPlannerServer::NodeAccess ShotPredictorNode::plannerAccess()
+{
+  ShotPlannerServer::NodeAccess access;
+  access.configure = [this](const std::vector<std::string>& names, const std::vector<double>& values,
+                            PlanningSettings& planning) { return configurationWith(names, values, &planning); };
+  access.table = [this](const TableState& table)
+  {
+    if (!table.balls.empty())
+      return table;
+    std::lock_guard<std::mutex> lock(table_mutex_);
+    return latest_table_;
+  };
+  access.place_table = [this](const TableState& table) -> Expected<std::vector<TableBall>>
+  {
+    if (Status status = checkTable(table); !status)
+      return status.error();
+    return placeTable(table);
+  };
+  access.place_point = [this](const geometry_msgs::PointStamped& point, const std::string& field)
+  { return placePoint(point, field); };
+  return access;
 }
 
 void ShotPredictorNode::storeTable(const TableState::ConstPtr& table)
@@ -202,7 +257,7 @@ bool ShotPredictorNode::predict(PredictShot::Request& request, PredictShot::Resp
   const TableState table = tableFor(request);
   if (Status status = firstError({checkTable(table), checkRequest(request, hasCueBall(table))}); !status)
     return fail(status.error());
-  auto configuration = configurationFor(request);
+  auto configuration = configurationWith(request.override_names, request.override_values);
   if (!configuration)
     return fail(configuration.error());
   auto balls = placeTable(table);

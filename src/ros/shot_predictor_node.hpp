@@ -13,10 +13,12 @@
 #include <mutex>
 
 #include "node_settings.hpp"
+#include "shot_planner_server.hpp"
 
 namespace billiard_shot_planner
 {
-/// The ROS face of the core library: ~predict_shot in, ~prediction and ~trajectory_markers out. A thin adapter:
+/// The ROS face of the core library: ~predict_shot in, ~prediction and ~trajectory_markers out; the planner's
+/// ~plan_shot and ~plan_shot_now (ShotPlannerServer) share its table, tf buffer and configuration. A thin adapter:
 /// messages and tf2 in, predictShot(), messages and markers out. The core is pure and thread-safe, so the service
 /// may be served by several threads at once; the physical parameters can be tuned at run time (~tuning, through
 /// dynamic_reconfigure), each request using a consistent snapshot of them.
@@ -38,7 +40,13 @@ private:
   /// The table's balls in the table frame (at rest on the cloth).
   Expected<std::vector<TableBall>> placeTable(const TableState& table) const;
   void storeTable(const TableState::ConstPtr& table);
-  Expected<ShotConfiguration> configurationFor(const PredictShot::Request& request) const;
+  /// The node's configuration (and, when `planning` is given, its planning settings) with per-call overrides.
+  Expected<ShotConfiguration> configurationWith(const std::vector<std::string>& names,
+                                                const std::vector<double>& values,
+                                                PlanningSettings* planning = nullptr) const;
+  /// A point in the table frame; errors name `field`.
+  Expected<Eigen::Vector2d> placePoint(const geometry_msgs::PointStamped& point, const std::string& field) const;
+  ShotPlannerServer::NodeAccess plannerAccess();
   /// A change through ~tuning: applied whole, or rejected whole with `tuning` reset to the node's configuration and
   /// the reason in tuning.rejected (the server answers the client with it).
   void retune(ShotPredictorConfig& tuning, uint32_t level);
@@ -56,6 +64,7 @@ private:
   ros::Subscriber table_subscriber_;
   mutable std::mutex table_mutex_;  ///< guards latest_table_ against the subscriber's callback
   TableState latest_table_;
+  std::unique_ptr<ShotPlannerServer> planner_;
 };
 
 }  // namespace billiard_shot_planner

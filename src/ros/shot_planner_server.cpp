@@ -1,0 +1,140 @@
+#include "shot_planner_server.hpp"
+
+#include "billiard_shot_planner/core/validation.hpp"
+#include "plan_message.hpp"
+#include "trajectory_markers.hpp"
+
+namespace billiard_shot_planner
+{
+namespace
+{
+PlanShotResult failure(const Error& error)
+{
+  PlanShotResult result;
+  result.success = false;
+  result.message = error.describe();
+  return result;
+}
+
+/// The goal's fields as the planner's request fields; the balls and the region are placed by the caller.
+Status readGoal(const PlanShotGoal& goal, const PlanningSettings& settings, PlanRequest& request)
+{
+  request.cue_ball = goal.cue_ball.empty() ? CUE_BALL_ID : goal.cue_ball;
+  request.target = goal.target;
+  if (goal.pocket_number < 0)
+    return invalidArgument("pocket_number", "must be 0 (any) or a pocket's index + 1");
+  request.pocket = goal.pocket_number - 1;
+  if (!std::isfinite(goal.budget) || goal.budget < 0.0)
+    return invalidArgument("budget", "must be >= 0 s (0: the node's ~planning/budget)");
+  request.budget = goal.budget > 0.0 ? goal.budget : settings.budget;
+  request.seed = goal.seed;
+  request.rules = {goal.target_first != 0, goal.only_target != 0};
+  request.limits = settings.limits;
+  request.noise = settings.noise;
+  request.rollouts = settings.rollouts;
+  request.threads = settings.threads;
+  return {};
+}
+}  // namespace
+
+ShotPlannerServer::ShotPlannerServer(ros::NodeHandle& private_node, NodeAccess access, std::string frame,
+                                     double sample_spacing, ros::Publisher markers)
+    : access_(std::move(access)),
+      frame_(std::move(frame)),
+      sample_spacing_(sample_spacing),
+      markers_(std::move(markers)),
+      action_server_(
+          private_node, "plan_shot", [this](const PlanShotGoalConstPtr& goal) { execute(goal); }, false)
+{
+  action_server_.start();
+  service_ = private_node.advertiseService("plan_shot_now", &ShotPlannerServer::planNow, this);
+}
+
+Expected<PlanRequest> ShotPlannerServer::planRequest(const PlanShotGoal& goal, PlanningSettings& settings,
+                                                     ShotConfiguration& configuration) const
+{
+  if (goal.override_names.size() != goal.override_values.size())
+    return invalidArgument("override_values", "must have one value per name in override_names");
+  auto configured = access_.configure(goal.override_names, goal.override_values, settings);
+  if (!configured)
+    return configured.error();
+  configuration = configured.value();
+  PlanRequest request;
+  if (Status status = readGoal(goal, settings, request); !status)
+    return status.error();
+  const TableState table = access_.table(goal.table);
+  if (table.balls.empty())
+    return invalidArgument("table", "no balls: give them in the goal or publish them on ~table_state");
+  auto balls = access_.place_table(table);
+  if (!balls)
+    return balls.error();
+  request.balls = balls.value();
+  for (TableBall& ball : request.balls)
+    ball.state.position.z() = configuration.ball_radius;
+  if (goal.cue_region_radius > 0.0)
+  {
+    auto centre = access_.place_point(goal.cue_region_centre, "cue_region_centre");
+    if (!centre)
+      return centre.error();
+    request.cue_region = CueRegion{centre.value(), goal.cue_region_radius};
+  }
+  return request;
+}
+
+PlanShotResult ShotPlannerServer::plan(const PlanShotGoal& goal, const PlanHooks& hooks)
+{
+  PlanningSettings settings;
+  ShotConfiguration configuration;
+  auto request = planRequest(goal, settings, configuration);
+  if (!request)
+    return failure(request.error());
+  request.value().hooks = hooks;
+  auto plan = planShot(request.value(), configuration);
+  if (!plan)
+    return failure(plan.error());
+  publishMarkers(plan.value(), configuration);
+  return toResult(plan.value(), frame_, sample_spacing_);
+}
+
+void ShotPlannerServer::publishMarkers(const ShotPlan& plan, const ShotConfiguration& configuration)
+{
+  if (plan.outcome.table.balls.empty())
+    return;
+  visualization_msgs::MarkerArray markers = trajectoryMarkers(plan.outcome, configuration, frame_, sample_spacing_);
+  markers.markers.push_back(spreadMarker(plan.best, frame_, configuration.ball_radius));
+  markers_.publish(markers);
+}
+
+void ShotPlannerServer::execute(const PlanShotGoalConstPtr& goal)
+{
+  PlanHooks hooks;
+  hooks.progress = [this](const PlanProgress& progress)
+  {
+    PlanShotFeedback feedback;
+    feedback.evaluations = progress.evaluations;
+    feedback.shots_that_pot = progress.shots_that_pot;
+    feedback.best_probability = progress.best_probability;
+    action_server_.publishFeedback(feedback);
+  };
+  hooks.stop = [this]() { return action_server_.isPreemptRequested() || !ros::ok(); };
+  const PlanShotResult result = plan(*goal, hooks);
+  if (!result.success)
+  {
+    ROS_WARN("plan_shot: %s", result.message.c_str());
+    action_server_.setAborted(result, result.message);
+  }
+  else if (action_server_.isPreemptRequested())
+    action_server_.setPreempted(result, "preempted: the best plan found so far");
+  else
+    action_server_.setSucceeded(result);
+}
+
+bool ShotPlannerServer::planNow(PlanShotNow::Request& request, PlanShotNow::Response& response)
+{
+  response.result = plan(request.goal, PlanHooks{});
+  if (!response.result.success)
+    ROS_WARN("plan_shot_now: %s", response.result.message.c_str());
+  return true;  // a goal that cannot be planned is an answer, not a failed call
+}
+
+}  // namespace billiard_shot_planner

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <actionlib/server/simple_action_server.h>
+#include <billiard_shot_planner/PlanShotAction.h>
+#include <billiard_shot_planner/PlanShotNow.h>
+#include <billiard_shot_planner/TableState.h>
+#include <geometry_msgs/PointStamped.h>
+#include <ros/ros.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "billiard_shot_planner/planning/shot_planner.hpp"
+#include "planning_settings.hpp"
+
+namespace billiard_shot_planner
+{
+/// The planner's ROS face: the action ~plan_shot (feedback, preemption with the best plan so far) and the service
+/// ~plan_shot_now (one answer within the goal's budget), both in front of planShot(). What it needs of the node —
+/// the configuration with a goal's overrides, the table, tf — comes in as functions, so that the two share one
+/// table subscription, one tf buffer and one tuned configuration.
+class ShotPlannerServer
+{
+public:
+  struct NodeAccess
+  {
+    /// The shot configuration and the planning settings with the goal's overrides applied.
+    std::function<Expected<ShotConfiguration>(const std::vector<std::string>&, const std::vector<double>&,
+                                              PlanningSettings&)>
+        configure;
+    /// The goal's table, or the latest received when the goal's is empty.
+    std::function<TableState(const TableState&)> table;
+    /// The balls in the table frame.
+    std::function<Expected<std::vector<TableBall>>(const TableState&)> place_table;
+    /// A point in the table frame.
+    std::function<Expected<Eigen::Vector2d>(const geometry_msgs::PointStamped&, const std::string&)> place_point;
+  };
+
+  ShotPlannerServer(ros::NodeHandle& private_node, NodeAccess access, std::string frame, double sample_spacing,
+                    ros::Publisher markers);
+
+private:
+  void execute(const PlanShotGoalConstPtr& goal);
+  bool planNow(PlanShotNow::Request& request, PlanShotNow::Response& response);
+  /// The result of a goal (success false with the reason when it cannot be planned).
+  PlanShotResult plan(const PlanShotGoal& goal, const PlanHooks& hooks);
+  Expected<PlanRequest> planRequest(const PlanShotGoal& goal, PlanningSettings& settings,
+                                    ShotConfiguration& configuration) const;
+  void publishMarkers(const ShotPlan& plan, const ShotConfiguration& configuration);
+
+  NodeAccess access_;
+  std::string frame_;
+  double sample_spacing_;
+  ros::Publisher markers_;
+  actionlib::SimpleActionServer<PlanShotAction> action_server_;
+  ros::ServiceServer service_;
+};
+
+}  // namespace billiard_shot_planner
