@@ -11,13 +11,14 @@
 // blocked layouts) and the cue ball does not drop. A plan that found no pot is measured on the closest attempt it
 // returns (none: probability 0). The baseline aims the cue ball's centre at the ghost ball of the target–pocket pair
 // with the smallest cut among those whose straight paths pass 2R from the other object balls (none: the smallest
-// cut), with a level cue, a centre hit and a cue speed of 2 m/s.
+// cut), a centre hit at a cue speed of 2 m/s and the lowest elevation whose cue clears the balls and the rails (the
+// planner's rule, without its margin). A noisy stroke whose cue touches a ball or a rail is a miss for both.
 //
 // Layout k of the random ones is drawn by std::mt19937(k) and planned with seed k; the blocked ones follow as
 // layouts N, N + 1, N + 2. Arguments: [layouts N = 200] [fresh rollouts = 1000] [planner threads = 1] [one layout
 // index: plan only that one and print both shots].
 //
-// From the repository's root (one command line):
+// Built with -DBILLIARD_SHOT_PLANNER_BENCHMARKS=ON (scripts/bench runs it); by hand from the repository's root:
 //   g++ -O2 -std=c++17 -Iinclude -I/usr/include/eigen3 bench/plan_benchmark.cpp -Lbuild/devel/lib
 //     -lbilliard_shot_planner_planning -lbilliard_shot_planner_core -Wl,-rpath,$PWD/build/devel/lib
 //     -o /tmp/plan_benchmark
@@ -76,6 +77,7 @@ struct LayoutResult
   double planner_estimate = 0.0;
   int planner_estimate_rollouts = 0;
   double planning_seconds = 0.0;
+  double first_pot_seconds = NAN;  ///< when the planner first reported a shot that pots (NaN: never)
 };
 
 struct Settings
@@ -209,6 +211,26 @@ GhostBallCandidate ghostBallCandidate(const Layout& layout, std::size_t target, 
   return candidate;
 }
 
+std::vector<bsp::TableBall> objectBalls(const Layout& layout)
+{
+  return {layout.balls.begin() + 1, layout.balls.end()};
+}
+
+/// The lowest elevation in steps of 2° (the planner's) whose cue clears the balls and the rails; level when none
+/// does.
+double lowestClearElevation(bsp::Stroke stroke, const Layout& layout)
+{
+  const bsp::RobotLimits limits;
+  for (double theta = limits.min_theta; theta <= limits.max_theta + 1e-12; theta += 2.0 * M_PI / 180.0)
+  {
+    stroke.theta = theta;
+    const auto cue = bsp::placeStroke(stroke, layout.balls[0].state.position.head<2>(), R);
+    if (cue && bsp::cueClears(cue.value(), objectBalls(layout), CONFIGURATION.table, limits, R))
+      return theta;
+  }
+  return 0.0;
+}
+
 bool better(const GhostBallCandidate& a, const GhostBallCandidate& b)
 {
   return a.clear != b.clear ? a.clear : a.cut < b.cut;
@@ -236,6 +258,7 @@ ChosenShot ghostBallShot(const Layout& layout)
   shot.target = layout.balls[best.target].id;
   shot.stroke.phi = std::atan2(best.aim.y(), best.aim.x());
   shot.stroke.speed = BASELINE_SPEED;
+  shot.stroke.theta = lowestClearElevation(shot.stroke, layout);
   return shot;
 }
 
@@ -288,6 +311,8 @@ bool noisyRolloutPots(const ChosenShot& shot, const Layout& layout, const std::v
     ++unpredictable_rollouts;
     return false;
   }
+  if (!bsp::cueClears(cue.value(), others, CONFIGURATION.table, bsp::RobotLimits{}, R))
+    return false;  // the cue touches a ball or passes through a rail: a foul, not a pot
   const auto outcome = bsp::predictShot(cue.value(), CONFIGURATION, others);
   if (!outcome)
   {
@@ -316,7 +341,14 @@ LayoutResult measure(const Layout& layout, const Settings& settings)
   LayoutResult result;
   result.group = layout.group;
   result.seed = layout.seed;
-  const auto plan = bsp::planShot(planRequest(layout, settings.threads), CONFIGURATION);
+  bsp::PlanRequest request = planRequest(layout, settings.threads);
+  const auto start = std::chrono::steady_clock::now();
+  request.hooks.progress = [&](const bsp::PlanProgress& progress)
+  {
+    if (progress.shots_that_pot > 0 && std::isnan(result.first_pot_seconds))
+      result.first_pot_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  const auto plan = bsp::planShot(request, CONFIGURATION);
   if (!plan)
   {
     std::fprintf(stderr, "layout %u: %s\n", layout.seed, plan.error().describe().c_str());
@@ -369,14 +401,14 @@ void printHeader()
 {
   std::printf(
       "| group | layouts | planner found | baseline found | planner P(pot) | baseline P(pot) | planner − baseline "
-      "(planner found) | plan p50 s | plan p95 s | mean \\|estimate − fresh\\| | largest \\|estimate − fresh\\| "
-      "(seed) |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "(planner found) | first pot p50 s | plan p50 s | plan p95 s | mean \\|estimate − fresh\\| | largest "
+      "\\|estimate − fresh\\| (seed) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 }
 
 void printRow(const std::string& group, const std::vector<LayoutResult>& results)
 {
-  std::vector<double> planner, baseline, difference, seconds, errors;
+  std::vector<double> planner, baseline, difference, seconds, errors, first_pot;
   int planner_found = 0, baseline_found = 0;
   const LayoutResult* worst = nullptr;
   for (const LayoutResult& r : results)
@@ -390,16 +422,19 @@ void printRow(const std::string& group, const std::vector<LayoutResult>& results
       continue;
     difference.push_back(r.planner_fresh - r.baseline_fresh);
     errors.push_back(estimateError(r));
+    if (!std::isnan(r.first_pot_seconds))
+      first_pot.push_back(r.first_pot_seconds);
     if (!worst || estimateError(r) > estimateError(*worst))
       worst = &r;
   }
   const double n = static_cast<double>(results.size());
   const std::string largest =
       worst ? formatted("%.3f", estimateError(*worst)) + " (" + std::to_string(worst->seed) + ")" : "–";
-  std::printf("| %s | %zu | %.0f %% | %.0f %% | %s | %s | %s (%zu) | %s | %s | %s | %s |\n", group.c_str(),
+  std::printf("| %s | %zu | %.0f %% | %.0f %% | %s | %s | %s (%zu) | %s | %s | %s | %s | %s |\n", group.c_str(),
               results.size(), 100.0 * planner_found / n, 100.0 * baseline_found / n,
               formatted("%.3f", mean(planner)).c_str(), formatted("%.3f", mean(baseline)).c_str(),
               formatted("%+.3f", mean(difference)).c_str(), difference.size(),
+              first_pot.empty() ? "–" : formatted("%.3f", percentile(first_pot, 0.5)).c_str(),
               formatted("%.3f", percentile(seconds, 0.5)).c_str(), formatted("%.3f", percentile(seconds, 0.95)).c_str(),
               formatted("%.3f", mean(errors)).c_str(), largest.c_str());
 }

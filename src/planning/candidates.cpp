@@ -9,6 +9,10 @@ namespace planning
 {
 namespace
 {
+/// Factor on the difficulty of a candidate with a ball in the way of the cue ball or the target: after every clear
+/// one.
+constexpr double BLOCKED_PENALTY = 1e3;
+
 /// Steps of the cue's elevation tried from the lowest allowed until the cue clears.
 constexpr double ELEVATION_STEP = 2.0 * M_PI / 180.0;
 
@@ -46,15 +50,26 @@ double initialSpeed(double cue_path, double object_path, double cut, const PlanC
   return std::clamp(cue_ball / BALL_OVER_CUE, limits.min_speed, limits.max_speed);
 }
 
-/// The lowest elevation from the limits' minimum whose cue clears the balls and the rails, if any.
+/// Room the cue keeps from the balls and the rails in a planned stroke: three standard deviations of its aim and
+/// elevation noise over its length, so that noisy strokes rarely touch what the nominal one clears (at the
+/// lowest elevation that clears without it, a quarter of the noisy strokes put the cue into a rail).
+double clearanceMargin(const PlanContext& context)
+{
+  const ExecutionNoise& noise = context.request.noise;
+  return 3.0 * std::hypot(noise.phi, noise.theta) * context.request.limits.cue_length;
+}
+
+/// The lowest elevation from the limits' minimum whose cue clears the balls and the rails with the clearance
+/// margin, if any.
 std::optional<double> clearElevation(Stroke stroke, const PlanContext& context)
 {
   const RobotLimits& limits = context.request.limits;
+  const double margin = clearanceMargin(context);
   for (double theta = limits.min_theta; theta <= limits.max_theta + 1e-12; theta += ELEVATION_STEP)
   {
     stroke.theta = theta;
     auto cue = placeStroke(stroke, context.cue_ball, context.radius());
-    if (cue && cueClears(cue.value(), context))
+    if (cue && cueClears(cue.value(), context, margin))
       return theta;
   }
   return std::nullopt;
@@ -84,11 +99,11 @@ void addCandidate(const TableBall& target, int pocket, const PlanContext& contex
     ++search.too_thin;
     return;
   }
-  if (!pathIsClear(context.cue_ball, ghost, target.id, context) || !pathIsClear(object, hole, target.id, context))
-  {
-    ++search.blocked;
-    return;
-  }
+  // A ball in the way is tried last rather than dropped: the simulation decides whether the shot still pots (the
+  // cue ball may drive the ball in the way into the target, a kiss may clear it).
+  const bool blocked =
+      !pathIsClear(context.cue_ball, ghost, target.id, context) || !pathIsClear(object, hole, target.id, context);
+  search.blocked += blocked;
   Stroke stroke;
   stroke.phi = std::atan2(aim.y(), aim.x());
   stroke.speed = initialSpeed(aim.norm(), (hole - object).norm(), cut, context);
@@ -99,7 +114,8 @@ void addCandidate(const TableBall& target, int pocket, const PlanContext& contex
     return;
   }
   stroke.theta = *theta;
-  const double difficulty = (aim.norm() + (hole - object).norm()) / std::max(std::cos(cut), 0.05);
+  const double difficulty =
+      (blocked ? BLOCKED_PENALTY : 1.0) * (aim.norm() + (hole - object).norm()) / std::max(std::cos(cut), 0.05);
   search.candidates.push_back({target.id, pocket, stroke, cut, difficulty});
 }
 }  // namespace

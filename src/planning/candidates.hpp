@@ -24,7 +24,7 @@ struct CandidateSearch
 {
   std::vector<Candidate> candidates;  ///< easiest first
   int pairs = 0;                      ///< target–pocket pairs considered
-  int blocked = 0;                    ///< of them, with a ball in the way of the target or the cue ball
+  int blocked = 0;                    ///< of them, with a ball in the way of the target or the cue ball (tried last)
   int too_thin = 0;                   ///< with a cut beyond MAX_CUT
   int cue_blocked = 0;                ///< where no elevation within the limits clears the cue
 };
@@ -34,8 +34,8 @@ struct CandidateSearch
 constexpr double MAX_CUT = 80.0 * M_PI / 180.0;
 
 /// Direct pots by the ghost ball: for each target (the requested one, or every object ball) and pocket (the
-/// requested one, or every pocket) whose straight paths — cue ball to ghost ball, target to pocket — keep 2R from
-/// every other ball.
+/// requested one, or every pocket); those whose straight paths — cue ball to ghost ball, target to pocket — pass
+/// within 2R of another ball come last.
 CandidateSearch directPots(const PlanContext& context);
 
 }  // namespace planning

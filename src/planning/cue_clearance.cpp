@@ -5,18 +5,16 @@
 
 namespace billiard_shot_planner
 {
-namespace planning
-{
 namespace
 {
-bool clearsTheBalls(const Eigen::Vector3d& tip, const Eigen::Vector3d& back, const PlanContext& context)
+bool clearsTheBalls(const Eigen::Vector3d& tip, const Eigen::Vector3d& back, const std::vector<TableBall>& others,
+                    const RobotLimits& limits, double ball_radius, double margin)
 {
-  const RobotLimits& limits = context.request.limits;
-  for (const TableBall& ball : context.others)
+  for (const TableBall& ball : others)
   {
     const Eigen::Vector3d centre = ball.state.position;
     const double along = std::clamp((centre - tip).dot(back), 0.0, limits.cue_length);
-    if ((tip + along * back - centre).norm() < context.radius() + limits.cue_radius)
+    if ((tip + along * back - centre).norm() < ball_radius + limits.cue_radius + margin)
       return false;
   }
   return true;
@@ -24,10 +22,9 @@ bool clearsTheBalls(const Eigen::Vector3d& tip, const Eigen::Vector3d& back, con
 
 /// Where the cue's axis crosses a rail line (the edge of the playing surface) within its length, its underside is
 /// above the rails' top.
-bool passesAboveTheRails(const Eigen::Vector3d& tip, const Eigen::Vector3d& back, const PlanContext& context)
+bool passesAboveTheRails(const Eigen::Vector3d& tip, const Eigen::Vector3d& back, const Table& table,
+                         const RobotLimits& limits, double margin)
 {
-  const RobotLimits& limits = context.request.limits;
-  const Table& table = context.configuration.table;
   for (int axis = 0; axis < 2; ++axis)
   {
     if (back(axis) == 0.0)
@@ -37,7 +34,7 @@ bool passesAboveTheRails(const Eigen::Vector3d& tip, const Eigen::Vector3d& back
     {
       const double along = (side * half - tip(axis)) / back(axis);
       if (along > 0.0 && along <= limits.cue_length &&
-          tip.z() + along * back.z() - limits.cue_radius < limits.rail_height)
+          tip.z() + along * back.z() - limits.cue_radius - margin < limits.rail_height)
         return false;
     }
   }
@@ -45,10 +42,20 @@ bool passesAboveTheRails(const Eigen::Vector3d& tip, const Eigen::Vector3d& back
 }
 }  // namespace
 
-bool cueClears(const CuePlacement& cue, const PlanContext& context)
+bool cueClears(const CuePlacement& cue, const std::vector<TableBall>& others, const Table& table,
+               const RobotLimits& limits, double ball_radius, double margin)
 {
   const Eigen::Vector3d back = -cue.direction.normalized();  // from the tip towards the butt
-  return clearsTheBalls(cue.tip, back, context) && passesAboveTheRails(cue.tip, back, context);
+  return clearsTheBalls(cue.tip, back, others, limits, ball_radius, margin) &&
+         passesAboveTheRails(cue.tip, back, table, limits, margin);
+}
+
+namespace planning
+{
+bool cueClears(const CuePlacement& cue, const PlanContext& context, double margin)
+{
+  return billiard_shot_planner::cueClears(cue, context.others, context.configuration.table, context.request.limits,
+                                          context.radius(), margin);
 }
 
 }  // namespace planning

@@ -57,8 +57,8 @@ constexpr double UNPLAYABLE_MARGIN = -10.0;
 StrokeEvaluation evaluateStroke(const Stroke& stroke, const std::string& target, int pocket,
                                 const PlanContext& context);
 
-/// Whether the cue, placed for the stroke, keeps clear of every other ball and passes above the rails.
-bool cueClears(const CuePlacement& cue, const PlanContext& context);
+/// Whether the cue, placed for the stroke, keeps clear of every other ball and passes above the rails, by `margin`.
+bool cueClears(const CuePlacement& cue, const PlanContext& context, double margin = 0.0);
 
 }  // namespace planning
 }  // namespace billiard_shot_planner

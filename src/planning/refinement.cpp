@@ -44,11 +44,15 @@ double margin(const std::vector<double>& x, std::vector<double>& /*gradient*/, v
 }
 }  // namespace
 
+double goodMargin(const Candidate& candidate, const PlanContext& context)
+{
+  return 0.5 * context.configuration.table.pockets[static_cast<std::size_t>(candidate.pocket)].radius;
+}
+
 RefinedShot refine(const Candidate& candidate, const PlanContext& context, Clock::time_point deadline)
 {
   Search search{context, deadline, {candidate, {}, 0}};
-  const double good_margin =
-      0.5 * context.configuration.table.pockets[static_cast<std::size_t>(candidate.pocket)].radius;
+  const double good_margin = goodMargin(candidate, context);
   search.best.evaluation.margin = UNPLAYABLE_MARGIN;
   if (search.play(candidate.stroke).margin >= good_margin)
     return search.best;

@@ -21,6 +21,9 @@ struct RefinedShot
 /// strokes, or at `deadline`.
 RefinedShot refine(const Candidate& candidate, const PlanContext& context, Clock::time_point deadline);
 
+/// Half the capture radius of the candidate's pocket: a margin at which the refinement stops.
+double goodMargin(const Candidate& candidate, const PlanContext& context);
+
 constexpr double MAX_AIM_CORRECTION = 4.0 * M_PI / 180.0;
 constexpr int MAX_EVALUATIONS = 40;
 

@@ -42,6 +42,17 @@ void report(const PlanContext& context, const PlanProgress& progress)
     context.request.hooks.progress(progress);
 }
 
+/// Whether RANKED_SHOTS refined shots pot with half a capture radius to spare: the rollouts rank no more, so the
+/// time is better spent on them.
+bool enoughGoodShots(const std::vector<RefinedShot>& refined, const PlanContext& context)
+{
+  const auto good =
+      std::count_if(refined.begin(), refined.end(),
+                    [&](const RefinedShot& shot)
+                    { return shot.evaluation.pots && shot.evaluation.margin >= goodMargin(shot.candidate, context); });
+  return static_cast<std::size_t>(good) >= RANKED_SHOTS;
+}
+
 /// Refines candidates, easiest first, while the refinement's share of the budget lasts (the first always).
 std::vector<RefinedShot> refineCandidates(const CandidateSearch& search, const PlanContext& context,
                                           Clock::time_point start, int& evaluations)
@@ -51,7 +62,7 @@ std::vector<RefinedShot> refineCandidates(const CandidateSearch& search, const P
   int pots = 0;
   for (const Candidate& candidate : search.candidates)
   {
-    if (!refined.empty() && context.shouldStop(until))
+    if (!refined.empty() && (context.shouldStop(until) || enoughGoodShots(refined, context)))
       break;
     refined.push_back(refine(candidate, context, refined.empty() ? context.deadline : until));
     evaluations += refined.back().evaluations;
@@ -149,8 +160,9 @@ void confirm(PlannedShot& best, const PlanContext& context, int& evaluations)
 std::string noPotExplanation(const CandidateSearch& search, const std::vector<RefinedShot>& refined)
 {
   std::string text = std::to_string(search.pairs) + " target–pocket pairs: " + std::to_string(search.blocked) +
-                     " with a ball in the way, " + std::to_string(search.too_thin) + " cut thinner than 80°, " +
-                     std::to_string(search.cue_blocked) + " where the cue cannot clear the balls and rails";
+                     " with a ball in the way (tried last), " + std::to_string(search.too_thin) +
+                     " cut thinner than 80°, " + std::to_string(search.cue_blocked) +
+                     " where the cue cannot clear the balls and rails";
   if (refined.empty())
     return "no direct shot to try (" + text + ")";
   const RefinedShot& closest = refined.front();

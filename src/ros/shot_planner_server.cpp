@@ -38,11 +38,11 @@ Status readGoal(const PlanShotGoal& goal, const PlanningSettings& settings, Plan
 }  // namespace
 
 ShotPlannerServer::ShotPlannerServer(ros::NodeHandle& private_node, NodeAccess access, std::string frame,
-                                     double sample_spacing, ros::Publisher markers)
+                                     double sample_spacing, const ros::Publisher& markers)
     : access_(std::move(access)),
       frame_(std::move(frame)),
       sample_spacing_(sample_spacing),
-      markers_(std::move(markers)),
+      markers_(markers),
       action_server_(
           private_node, "plan_shot", [this](const PlanShotGoalConstPtr& goal) { execute(goal); }, false)
 {
