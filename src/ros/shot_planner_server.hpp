@@ -39,7 +39,7 @@ public:
   };
 
   ShotPlannerServer(ros::NodeHandle& private_node, NodeAccess access, std::string frame, double sample_spacing,
-                    ros::Publisher markers);
+                    const ros::Publisher& markers);
 
 private:
   void execute(const PlanShotGoalConstPtr& goal);
