@@ -196,6 +196,7 @@ json shotJson(const PlannedShot& shot)
 {
   return {{"target", shot.target},
           {"pocket", shot.pocket},
+          {"bank_cushion", shot.bank_cushion >= 0 ? json(shot.bank_cushion) : json(nullptr)},
           {"cue", strokeJson(shot.stroke)},
           {"cue_pose", {{"tip", toVector(shot.cue.tip)}, {"direction", toVector(shot.cue.direction)}}},
           {"margin", shot.margin},

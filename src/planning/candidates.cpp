@@ -13,6 +13,10 @@ namespace
 /// one.
 constexpr double BLOCKED_PENALTY = 1e3;
 
+/// Factor on the difficulty of a bank: after the direct pots of similar lengths (the rebound's angle depends on the
+/// ball's speed and spin, which the refinement must find).
+constexpr double BANK_PENALTY = 3.0;
+
 /// Steps of the cue's elevation tried from the lowest allowed until the cue clears.
 constexpr double ELEVATION_STEP = 2.0 * M_PI / 180.0;
 
@@ -85,12 +89,28 @@ std::vector<int> pocketsToTry(const PlanContext& context)
   return all;
 }
 
-void addCandidate(const TableBall& target, int pocket, const PlanContext& context, CandidateSearch& search)
+/// The target's way to its pocket: straight, or off one cushion.
+struct Route
+{
+  Eigen::Vector2d first_leg_end;  ///< the pocket, or the point where the target meets the cushion
+  double length = 0.0;            ///< m, along both legs
+  int bank_cushion = -1;          ///< 0: −x, 1: +x, 2: −y, 3: +y; −1: straight
+};
+
+bool routeIsClear(const Eigen::Vector2d& object, const Eigen::Vector2d& hole, const Route& route,
+                  const std::string& target, const PlanContext& context)
+{
+  return pathIsClear(object, route.first_leg_end, target, context) &&
+         (route.bank_cushion < 0 || pathIsClear(route.first_leg_end, hole, target, context));
+}
+
+void addCandidate(const TableBall& target, int pocket, const Route& route, const PlanContext& context,
+                  CandidateSearch& search)
 {
   ++search.pairs;
   const Eigen::Vector2d object = target.state.position.head<2>();
   const Eigen::Vector2d hole = context.configuration.table.pockets[static_cast<std::size_t>(pocket)].centre;
-  const Eigen::Vector2d line = (hole - object).normalized();
+  const Eigen::Vector2d line = (route.first_leg_end - object).normalized();
   const Eigen::Vector2d ghost = object - 2.0 * context.radius() * line;
   const Eigen::Vector2d aim = ghost - context.cue_ball;
   const double cut = std::acos(std::clamp(aim.normalized().dot(line), -1.0, 1.0));
@@ -101,12 +121,12 @@ void addCandidate(const TableBall& target, int pocket, const PlanContext& contex
   }
   // A ball in the way is tried last rather than dropped: the simulation decides whether the shot still pots (the
   // cue ball may drive the ball in the way into the target, a kiss may clear it).
-  const bool blocked =
-      !pathIsClear(context.cue_ball, ghost, target.id, context) || !pathIsClear(object, hole, target.id, context);
+  const bool blocked = !pathIsClear(context.cue_ball, ghost, target.id, context) ||
+                       !routeIsClear(object, hole, route, target.id, context);
   search.blocked += blocked;
   Stroke stroke;
   stroke.phi = std::atan2(aim.y(), aim.x());
-  stroke.speed = initialSpeed(aim.norm(), (hole - object).norm(), cut, context);
+  stroke.speed = initialSpeed(aim.norm(), route.length, cut, context);
   const auto theta = clearElevation(stroke, context);
   if (!theta)
   {
@@ -114,13 +134,51 @@ void addCandidate(const TableBall& target, int pocket, const PlanContext& contex
     return;
   }
   stroke.theta = *theta;
-  const double difficulty =
-      (blocked ? BLOCKED_PENALTY : 1.0) * (aim.norm() + (hole - object).norm()) / std::max(std::cos(cut), 0.05);
-  search.candidates.push_back({target.id, pocket, stroke, cut, difficulty});
+  const double penalty = (blocked ? BLOCKED_PENALTY : 1.0) * (route.bank_cushion >= 0 ? BANK_PENALTY : 1.0);
+  const double difficulty = penalty * (aim.norm() + route.length) / std::max(std::cos(cut), 0.05);
+  search.candidates.push_back({target.id, pocket, stroke, cut, difficulty, route.bank_cushion});
+}
+
+/// The route off cushion `cushion` to the pocket at `hole`, by the mirror image of the pocket in the line the
+/// target's centre runs along when it touches the cushion's nose; none when the pocket lies on that cushion, or the
+/// target would meet the cushion within a pocket's reach (its jaws).
+std::optional<Route> bankRoute(const Eigen::Vector2d& object, const Eigen::Vector2d& hole, int cushion,
+                               const PlanContext& context)
+{
+  const Table& table = context.configuration.table;
+  const double radius = context.radius();
+  const int axis = cushion / 2;
+  const double side = cushion % 2 == 0 ? -1.0 : 1.0;
+  const double half = 0.5 * (axis == 0 ? table.length : table.width);
+  if (side * hole(axis) >= half - 1e-9)
+    return std::nullopt;  // the pocket is on this cushion
+  // The nose touches the ball at height h: its centre is then R cos(asin((h − R)/R)) from the nose line.
+  const double sin_nose = std::clamp((table.cushion_height - radius) / radius, -1.0, 1.0);
+  const double line = side * (half - radius * std::sqrt(1.0 - sin_nose * sin_nose));
+  Eigen::Vector2d mirrored = hole;
+  mirrored(axis) = 2.0 * line - hole(axis);
+  const double t = (line - object(axis)) / (mirrored(axis) - object(axis));
+  if (!(t > 0.0 && t < 1.0))
+    return std::nullopt;
+  const Eigen::Vector2d bounce = object + t * (mirrored - object);
+  for (const Pocket& p : table.pockets)
+    if ((bounce - p.centre).norm() < p.radius + 2.0 * radius)
+      return std::nullopt;
+  return Route{bounce, (mirrored - object).norm(), cushion};
+}
+
+void addCandidates(const TableBall& target, int pocket, const PlanContext& context, CandidateSearch& search)
+{
+  const Eigen::Vector2d object = target.state.position.head<2>();
+  const Eigen::Vector2d hole = context.configuration.table.pockets[static_cast<std::size_t>(pocket)].centre;
+  addCandidate(target, pocket, Route{hole, (hole - object).norm(), -1}, context, search);
+  for (int cushion = 0; cushion < 4; ++cushion)
+    if (const auto route = bankRoute(object, hole, cushion, context))
+      addCandidate(target, pocket, *route, context, search);
 }
 }  // namespace
 
-CandidateSearch directPots(const PlanContext& context)
+CandidateSearch candidateShots(const PlanContext& context)
 {
   CandidateSearch search;
   for (const TableBall& ball : context.others)
@@ -128,7 +186,7 @@ CandidateSearch directPots(const PlanContext& context)
     if (!context.request.target.empty() && ball.id != context.request.target)
       continue;
     for (int pocket : pocketsToTry(context))
-      addCandidate(ball, pocket, context, search);
+      addCandidates(ball, pocket, context, search);
   }
   std::sort(search.candidates.begin(), search.candidates.end(),
             [](const Candidate& a, const Candidate& b) { return a.difficulty < b.difficulty; });

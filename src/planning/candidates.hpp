@@ -17,13 +17,14 @@ struct Candidate
   Stroke stroke;            ///< the ghost-ball aim, the lowest elevation whose cue clears, a centre hit
   double cut = 0.0;         ///< rad, between the cue ball's path and the target's
   double difficulty = 0.0;  ///< smaller is easier: the paths' length over the cut's cosine
+  int bank_cushion = -1;    ///< the cushion the target banks off (0: −x, 1: +x, 2: −y, 3: +y); −1: straight in
 };
 
 /// Why the candidates are what they are (for the explanation of a plan that finds nothing).
 struct CandidateSearch
 {
   std::vector<Candidate> candidates;  ///< easiest first
-  int pairs = 0;                      ///< target–pocket pairs considered
+  int pairs = 0;                      ///< target–pocket routes considered (straight in and off each cushion)
   int blocked = 0;                    ///< of them, with a ball in the way of the target or the cue ball (tried last)
   int too_thin = 0;                   ///< with a cut beyond MAX_CUT
   int cue_blocked = 0;                ///< where no elevation within the limits clears the cue
@@ -33,10 +34,11 @@ struct CandidateSearch
 /// dominates.
 constexpr double MAX_CUT = 80.0 * M_PI / 180.0;
 
-/// Direct pots by the ghost ball: for each target (the requested one, or every object ball) and pocket (the
-/// requested one, or every pocket); those whose straight paths — cue ball to ghost ball, target to pocket — pass
-/// within 2R of another ball come last.
-CandidateSearch directPots(const PlanContext& context);
+/// Pots by the ghost ball: for each target (the requested one, or every object ball) and pocket (the requested one,
+/// or every pocket), straight in and off each cushion (by the pocket's mirror image; banks after the direct pots of
+/// similar lengths); those whose straight paths — cue ball to ghost ball, the target's legs — pass within 2R of
+/// another ball come last.
+CandidateSearch candidateShots(const PlanContext& context);
 
 }  // namespace planning
 }  // namespace billiard_shot_planner

@@ -85,6 +85,7 @@ PlannedShot plannedShot(const RefinedShot& shot, const PlanContext& context)
   planned.cue = placeStroke(planned.stroke, context.cue_ball, context.radius()).value();
   planned.target = shot.candidate.target;
   planned.pocket = shot.candidate.pocket;
+  planned.bank_cushion = shot.candidate.bank_cushion;
   planned.margin = shot.evaluation.margin;
   return planned;
 }
@@ -159,7 +160,7 @@ void confirm(PlannedShot& best, const PlanContext& context, int& evaluations)
 
 std::string noPotExplanation(const CandidateSearch& search, const std::vector<RefinedShot>& refined)
 {
-  std::string text = std::to_string(search.pairs) + " target–pocket pairs: " + std::to_string(search.blocked) +
+  std::string text = std::to_string(search.pairs) + " target–pocket routes: " + std::to_string(search.blocked) +
                      " with a ball in the way (tried last), " + std::to_string(search.too_thin) +
                      " cut thinner than 80°, " + std::to_string(search.cue_blocked) +
                      " where the cue cannot clear the balls and rails";
@@ -198,7 +199,7 @@ Expected<ShotPlan> planShot(const PlanRequest& request, const ShotConfiguration&
   PlanContext context = makeContext(request, configuration);
   context.deadline = after(start, request.budget);
   ShotPlan plan;
-  const CandidateSearch search = directPots(context);
+  const CandidateSearch search = candidateShots(context);
   const std::vector<RefinedShot> refined = refineCandidates(search, context, start, plan.evaluations);
   std::vector<PlannedShot> ranked =
       rankByRollouts(refined, context, after(start, RANKING_SHARE * request.budget), plan.evaluations);

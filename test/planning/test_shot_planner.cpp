@@ -179,6 +179,23 @@ TEST(ShotPlanner, ABlockedPocketGivesNoPlanAndSaysWhy)
   EXPECT_NE(plan.explanation.find("1 with a ball in the way"), std::string::npos) << plan.explanation;
 }
 
+// The target 0.3 m from the −y rail with the cue ball behind it on the line to its bounce point: no straight route to
+// the (+x, +y) corner (its cut would be near 90°), one off the −y cushion by the pocket's mirror image. The plan
+// banks there, and pots when replayed independently.
+TEST(ShotPlanner, ABankIsPlannedWhenNoStraightRouteIsPlayable)
+{
+  bsp::PlanRequest request;
+  request.balls = {ballAt("cue", 0.035, 0.125), ballAt("one", 0.3, -0.3)};
+  request.target = "one";
+  request.pocket = TOP_RIGHT;
+  request.budget = 3.0;
+  const bsp::ShotPlan plan = planned(request);
+  ASSERT_TRUE(plan.found) << plan.explanation;
+  EXPECT_EQ(plan.best.bank_cushion, 2);
+  EXPECT_TRUE(replayPots(plan.best.cue, request, "one", TOP_RIGHT));
+  EXPECT_GT(plan.best.success_probability, 0.0);
+}
+
 TEST(ShotPlanner, BadRequestsAreRefusedNamingTheField)
 {
   const bsp::PlanRequest good = cutShot(0.4, 0.5, 0.0);

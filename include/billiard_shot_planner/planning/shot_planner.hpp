@@ -94,6 +94,7 @@ struct PlannedShot
   CuePlacement cue;  ///< the same shot as a cue pose and speed (as ~predict_shot takes it)
   std::string target;
   int pocket = -1;
+  int bank_cushion = -1;  ///< the cushion the target banks off (0: −x, 1: +x, 2: −y, 3: +y); −1: straight in
   /// m: how far inside its pocket's capture circle the target passes in the noise-free shot (negative: by how much
   /// it misses)
   double margin = 0.0;
@@ -131,9 +132,9 @@ Status validate(const ExecutionNoise& noise);
 /// "balls[2].position", …).
 Status validate(const PlanRequest& request, const ShotConfiguration& configuration);
 
-/// Plans a pot (docs/planning.md): candidate shots from the ghost ball for every target and pocket whose paths are
-/// clear, refined by NLopt's Sbplx on the target's margin in its pocket, then ranked by their pot probability from
-/// noisy rollouts. Ends within the budget (the first shot evaluated is always finished). Pure function of its
+/// Plans a pot (docs/planning.md): candidate shots from the ghost ball for every target and pocket, straight in and
+/// off one cushion, refined by NLopt's Sbplx on the target's margin in its pocket, then ranked by their pot probability
+/// from noisy rollouts. Ends within the budget (the first shot evaluated is always finished). Pure function of its
 /// arguments; thread-safe.
 Expected<ShotPlan> planShot(const PlanRequest& request, const ShotConfiguration& configuration);
 
