@@ -57,6 +57,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         !(solver["max_seconds"].get<double>() <= 2.0))
       solver["max_seconds"] = 2.0;
   }
+  // The same for a plan's own budget: a plan ends within it plus one stroke's solve. A budget that is not a number
+  // is kept, for the error it must give.
+  if (request.is_object() && request.contains("budget_ms") && request["budget_ms"].is_number() &&
+      !(request["budget_ms"].get<double>() <= 2000.0))
+    request["budget_ms"] = 2000.0;
   const auto result = billiard_shot_planner::solveJsonProblem(request);
   static const bool verbose = std::getenv("FUZZ_VERBOSE") != nullptr;
   if (!result)

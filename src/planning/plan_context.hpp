@@ -52,8 +52,9 @@ struct StrokeEvaluation
 /// A margin no real shot reaches: strokes that cannot be played or predicted.
 constexpr double UNPLAYABLE_MARGIN = -10.0;
 
-/// Plays `stroke` (no noise) and judges it. A stroke whose cue would touch a ball or a
-/// rail, or that cannot be played, is not valid and has UNPLAYABLE_MARGIN.
+/// Plays `stroke` (no noise) and judges it: the pot is the request's; the margin is measured in `pocket` (0 when it
+/// names no pocket). A stroke whose cue would touch a ball or a rail, or that cannot be played, is not valid and has
+/// UNPLAYABLE_MARGIN.
 StrokeEvaluation evaluateStroke(const Stroke& stroke, const std::string& target, int pocket,
                                 const PlanContext& context);
 

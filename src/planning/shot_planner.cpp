@@ -110,7 +110,7 @@ std::vector<PlannedShot> rankByRollouts(const std::vector<RefinedShot>& refined,
   for (std::size_t k = 0; k < refined.size() && shots.size() < RANKED_SHOTS && refined[k].evaluation.pots; ++k)
   {
     shots.push_back(plannedShot(refined[k], context));
-    rollouts.emplace_back(shots.back().stroke, shots.back().target, context.request.pocket,
+    rollouts.emplace_back(shots.back().stroke, shots.back().target, shots.back().pocket,
                           context.request.seed + static_cast<unsigned>(k), context);
   }
   const int threads = threadCount(context.request);
@@ -148,8 +148,8 @@ std::vector<PlannedShot> rankByRollouts(const std::vector<RefinedShot>& refined,
 /// (the winner's curse), an estimate from other draws is not. Kept only when some were played in time.
 void confirm(PlannedShot& best, const PlanContext& context, int& evaluations)
 {
-  NoisyRollouts rollouts(best.stroke, best.target, context.request.pocket,
-                         context.request.seed + CONFIRMATION_SEED_OFFSET, context);
+  NoisyRollouts rollouts(best.stroke, best.target, best.pocket, context.request.seed + CONFIRMATION_SEED_OFFSET,
+                         context);
   const int threads = threadCount(context.request);
   while (!rollouts.finished() && !context.pastDeadline())
     rollouts.play(ROLLOUT_BATCH, threads, context.deadline);
