@@ -40,14 +40,15 @@ Stroke noisyStroke(const Stroke& nominal, const ExecutionNoise& noise, double ra
 }
 }  // namespace
 
+// The interval holds the estimate (it always does, but at 0 or n successes only to round-off).
 double PotEstimate::low() const
 {
-  return wilsonBound(*this, -1.0);
+  return std::min(wilsonBound(*this, -1.0), probability());
 }
 
 double PotEstimate::high() const
 {
-  return wilsonBound(*this, 1.0);
+  return std::max(wilsonBound(*this, 1.0), probability());
 }
 
 NoisyRollouts::NoisyRollouts(const Stroke& nominal, std::string target, int pocket, unsigned seed,

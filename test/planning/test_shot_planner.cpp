@@ -73,6 +73,21 @@ bool replayPots(const bsp::CuePlacement& cue, const bsp::PlanRequest& request, c
 }
 }  // namespace
 
+// Wilson's interval at the extremes: all n rollouts pot (or none) and the interval still holds the estimate, ending
+// at 1 (or 0) on that side; its other end is the closed form's, n/(n + z²) (z²/(n + z²)).
+TEST(ShotPlanner, TheIntervalHoldsTheEstimateAtItsExtremes)
+{
+  bsp::PlanRequest request = cutShot(0.4, 0.5, 0.0);
+  request.noise = {0.0, 0.0, 0.0, 0.0, 0.0};  // no noise: every rollout is the nominal shot, which pots
+  request.rollouts = 30;
+  const bsp::ShotPlan plan = planned(request);
+  ASSERT_TRUE(plan.found) << plan.explanation;
+  const double z2 = 1.959963984540054 * 1.959963984540054, n = plan.best.rollouts;
+  EXPECT_EQ(plan.best.success_probability, 1.0);
+  EXPECT_EQ(plan.best.confidence_high, 1.0);
+  EXPECT_NEAR(plan.best.confidence_low, n / (n + z2), 1e-12);
+}
+
 // A straight-in shot: the plan pots when replayed independently, aims within the noise of the line of centres
 // (a head-on hit has no throw, a centre hit no squirt), and the rollouts find it nearly certain.
 TEST(ShotPlanner, AStraightInShotIsPlannedAlongTheLineOfCentres)
@@ -128,9 +143,12 @@ TEST(ShotPlanner, ItsPotProbabilityAgreesWithAFreshMeasurement)
   EXPECT_LT(p_fresh, 0.95);
 }
 
+// Within its budget (40 rollouts a shot: a few seconds even under the sanitizers) a plan is a function of the request
+// and its seed, whatever the threads' timing.
 TEST(ShotPlanner, TheSameSeedGivesTheSamePlan)
 {
-  const bsp::PlanRequest request = cutShot(0.5, 0.6, 30.0);
+  bsp::PlanRequest request = cutShot(0.5, 0.6, 30.0);
+  request.rollouts = 40;
   const bsp::ShotPlan a = planned(request), b = planned(request);
   ASSERT_TRUE(a.found && b.found);
   EXPECT_EQ(a.best.stroke.phi, b.best.stroke.phi);
