@@ -135,24 +135,22 @@ void ContactDynamics::forces(const double* y, Eigen::VectorXd& force, SlipDirect
 {
   if (any_quasi_steady_)
     relativeVelocity(y, scratch.velocity);
-  forcesWithVelocity(y, force, directions, scratch);
+  forcesWithVelocity(y, scratch.velocity, force, directions, scratch);
 }
 
-void ContactDynamics::forcesWithVelocity(const double* y, Eigen::VectorXd& force, SlipDirections& directions,
-                                         LagScratch& scratch) const
+void ContactDynamics::forcesWithVelocity(const double* y, const Eigen::VectorXd& w, Eigen::VectorXd& force,
+                                         SlipDirections& directions, LagScratch& scratch) const
 {
   carrierDirections(y, directions);
   if (any_quasi_steady_)
-    followSlip(y, NO_CONTACT, force, directions, scratch);
+    followSlip(y, w, NO_CONTACT, force, directions, scratch);
   forcesAlongDirections(y, directions, force);
 }
 
 void ContactDynamics::evaluate(const double* y, ForceEvaluation& at) const
 {
   relativeVelocity(y, at.velocity);
-  if (any_quasi_steady_)
-    at.lag.velocity = at.velocity;
-  forcesWithVelocity(y, at.force, at.directions, at.lag);
+  forcesWithVelocity(y, at.velocity, at.force, at.directions, at.lag);
 }
 
 void ContactDynamics::activeRelativeVelocity(const double* y, Eigen::VectorXd& velocity) const
@@ -180,20 +178,20 @@ void ContactDynamics::forcesAlongDirections(const double* y, const SlipDirection
     addLinkForces(directions, force);
 }
 
-void ContactDynamics::followSlip(const double* y, std::size_t also_following, Eigen::VectorXd& force,
-                                 SlipDirections& directions, LagScratch& scratch) const
+void ContactDynamics::followSlip(const double* y, const Eigen::VectorXd& w, std::size_t also_following,
+                                 Eigen::VectorXd& force, SlipDirections& directions, LagScratch& scratch) const
 {
   // The lag that keeps ρθ̇ = |v_t| sin(ψ − θ), θ the slip direction's angle and ψ the slip velocity's, on the slow
   // manifold: sin δ = ε(ψ̇ − δ̇) with δ = ψ − θ and ε = ρ/|v_t|, expanded in ε. First order (δ̇ = 0) leaves errors
   // of order ε³ in the friction, second order of order ε⁴ (docs/engine.md, "Quasi-steady slip").
-  firstOrderLags(y, scratch.velocity, also_following, force, directions, scratch.lags);
-  addLagRates(y, force, also_following, scratch);
+  firstOrderLags(y, w, also_following, force, directions, scratch.lags);
+  addLagRates(y, w, force, also_following, scratch);
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
     // Only a sliding contact has tangential rows: a frictionless one last in contact space has none to read.
     if (!follows(i, also_following))
       continue;
-    const Eigen::Vector2d v_t = scratch.velocity.segment<2>(space_.offset[i] + 1);
+    const Eigen::Vector2d v_t = w.segment<2>(space_.offset[i] + 1);
     const double speed = v_t.norm();
     if (speed == 0.0)
       continue;  // its direction stays its carrier's
@@ -240,8 +238,8 @@ void ContactDynamics::firstOrderLags(const double* y, const Eigen::VectorXd& w, 
   }
 }
 
-void ContactDynamics::addLagRates(const double* y, const Eigen::VectorXd& force, std::size_t also_following,
-                                  LagScratch& scratch) const
+void ContactDynamics::addLagRates(const double* y, const Eigen::VectorXd& w, const Eigen::VectorXd& force,
+                                  std::size_t also_following, LagScratch& scratch) const
 {
   // δ̇ of the first-order lag along the motion, by a forward difference over a hundredth of the relaxation time:
   // short against the time on which the lag changes (its truncation error is then 1e-2 of the correction's own
@@ -259,7 +257,7 @@ void ContactDynamics::addLagRates(const double* y, const Eigen::VectorXd& force,
   for (std::size_t i = 0; i < contacts_.size(); ++i)
   {
     const double cone_length = contacts_[i].sliding() ? coneLength(i, force) : 0.0;
-    springRates(i, y, scratch.velocity, cone_length, also_following, shifted.data() + n + space_.offset[i]);
+    springRates(i, y, w, cone_length, also_following, shifted.data() + n + space_.offset[i]);
   }
   for (Eigen::Index k = 0; k < n; ++k)
   {
@@ -268,7 +266,7 @@ void ContactDynamics::addLagRates(const double* y, const Eigen::VectorXd& force,
   }
   // The velocities are affine in the impulses: at the shifted state they are w + step·W F. The lags read them only
   // on the tangent rows of the followed contacts.
-  scratch.shifted_velocity = scratch.velocity;
+  scratch.shifted_velocity = w;
   for (std::size_t i = 0; i < contacts_.size(); ++i)
     if (follows(i, also_following))
     {
@@ -425,7 +423,7 @@ Eigen::Vector2d ContactDynamics::followedSlipDirection(std::size_t contact, cons
   // forces() with the contact following too.
   relativeVelocity(y, scratch.lag.velocity);
   carrierDirections(y, scratch.directions);
-  followSlip(y, contact, scratch.force, scratch.directions, scratch.lag);
+  followSlip(y, scratch.lag.velocity, contact, scratch.force, scratch.directions, scratch.lag);
   return scratch.directions[contact];
 }
 
@@ -495,9 +493,7 @@ double ContactDynamics::rates(const double* y, double* dydt, ForceEvaluation& at
   // The rates read the velocities of active contacts only (an inactive one's spring rests): in a large impact most
   // contacts are inactive at any instant.
   activeRelativeVelocity(y, at.velocity);
-  if (any_quasi_steady_)
-    at.lag.velocity = at.velocity;
-  forcesWithVelocity(y, at.force, at.directions, at.lag);
+  forcesWithVelocity(y, at.velocity, at.force, at.directions, at.lag);
   std::copy_n(at.force.data(), space_.size, dydt);
   double shrink_rate = 0.0;
   for (std::size_t i = 0; i < contacts_.size(); ++i)

@@ -29,7 +29,7 @@ struct SlipLag
 /// evaluates thousands per solve): scratch, its contents meaningless between evaluations.
 struct LagScratch
 {
-  Eigen::VectorXd velocity;  ///< w at the evaluated state
+  Eigen::VectorXd velocity;  ///< w at the evaluated state, when forces() or a followed direction computes it
   std::vector<SlipLag> lags, shifted_lags;
   OdeState shifted_state;
   Eigen::VectorXd shifted_velocity, shifted_force;
@@ -121,21 +121,21 @@ private:
   /// Spring length of a sliding contact on its friction cone, ρ = μF_n/κ, bounded below (smoothly) where the
   /// spring vanishes.
   double coneLength(std::size_t contact, const Eigen::VectorXd& force) const;
-  /// forces() with scratch.velocity already holding w at y (at least on the rows of the active contacts).
-  void forcesWithVelocity(const double* y, Eigen::VectorXd& force, SlipDirections& directions,
+  /// forces() with the velocities w at y given (at least on the rows of the active contacts).
+  void forcesWithVelocity(const double* y, const Eigen::VectorXd& w, Eigen::VectorXd& force, SlipDirections& directions,
                           LagScratch& scratch) const;
   /// w on the rows of the active contacts (the others left as they are) when W̃ is sparse; all of w otherwise.
   void activeRelativeVelocity(const double* y, Eigen::VectorXd& velocity) const;
-  /// Sets `directions` of the contacts that follow their slip (with `also_following`) and their forces;
-  /// scratch.velocity holds w at y (at least on the rows of the active contacts).
-  void followSlip(const double* y, std::size_t also_following, Eigen::VectorXd& force, SlipDirections& directions,
-                  LagScratch& scratch) const;
+  /// Sets `directions` of the contacts that follow their slip (with `also_following`) and their forces, from the
+  /// velocities w at y (read on the rows of the active contacts).
+  void followSlip(const double* y, const Eigen::VectorXd& w, std::size_t also_following, Eigen::VectorXd& force,
+                  SlipDirections& directions, LagScratch& scratch) const;
   /// First-order lags sin δ = εψ̇ of the followed contacts at y (velocities w) into `lags`, with `directions` along
   /// their slip and the forces of those directions into `force` (ψ̇ is the turning rate of v_t under them).
   void firstOrderLags(const double* y, const Eigen::VectorXd& w, std::size_t also_following, Eigen::VectorXd& force,
                       SlipDirections& directions, std::vector<SlipLag>& lags) const;
   /// Adds the second-order term −εδ̇ to scratch.lags (first order at y, with `force` their forces).
-  void addLagRates(const double* y, const Eigen::VectorXd& force, std::size_t also_following,
+  void addLagRates(const double* y, const Eigen::VectorXd& w, const Eigen::VectorXd& force, std::size_t also_following,
                    LagScratch& scratch) const;
   /// Forces with the sliding contacts' friction along `directions`.
   void forcesAlongDirections(const double* y, const SlipDirections& directions, Eigen::VectorXd& force) const;
