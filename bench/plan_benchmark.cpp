@@ -287,24 +287,12 @@ bool isPot(const bsp::TableTrajectory& run, const std::string& target, int pocke
   return false;
 }
 
-bsp::Stroke noisyStroke(const bsp::Stroke& nominal, const bsp::ExecutionNoise& noise, std::mt19937& random)
-{
-  std::normal_distribution<double> gauss(0.0, 1.0);
-  bsp::Stroke stroke = nominal;
-  stroke.phi += noise.phi * gauss(random);
-  stroke.theta += noise.theta * gauss(random);
-  stroke.speed += noise.speed * gauss(random);
-  stroke.a += noise.a / R * gauss(random);
-  stroke.b += noise.b / R * gauss(random);
-  return stroke;
-}
-
 int unpredictable_rollouts = 0;  ///< rollouts whose stroke could not be placed or predicted (counted as misses)
 
 bool noisyRolloutPots(const ChosenShot& shot, const Layout& layout, const std::vector<bsp::TableBall>& others,
                       std::mt19937& random)
 {
-  const bsp::Stroke stroke = noisyStroke(shot.stroke, bsp::ExecutionNoise{}, random);
+  const bsp::Stroke stroke = bsp::noisyStroke(shot.stroke, bsp::ExecutionNoise{}, R, random);
   const auto cue = bsp::placeStroke(stroke, layout.balls[0].state.position.head<2>(), R);
   if (!cue)
   {

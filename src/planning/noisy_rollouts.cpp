@@ -24,20 +24,6 @@ double wilsonBound(const PotEstimate& e, double sign)
   return std::clamp(centre + sign * half, 0.0, 1.0);
 }
 
-/// The stroke the robot plays when it means `nominal`: Gaussian errors of the noise's σ (offsets in metres, turned
-/// into ball radii).
-template <class Random>
-Stroke noisyStroke(const Stroke& nominal, const ExecutionNoise& noise, double radius, Random& random)
-{
-  std::normal_distribution<double> gauss(0.0, 1.0);
-  Stroke stroke = nominal;
-  stroke.phi += noise.phi * gauss(random);
-  stroke.theta += noise.theta * gauss(random);
-  stroke.speed += noise.speed * gauss(random);
-  stroke.a += noise.a / radius * gauss(random);
-  stroke.b += noise.b / radius * gauss(random);
-  return stroke;
-}
 }  // namespace
 
 // The interval holds the estimate (it always does, but at 0 or n successes only to round-off).

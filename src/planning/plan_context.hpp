@@ -49,6 +49,12 @@ struct StrokeEvaluation
   Eigen::Vector2d target_end = Eigen::Vector2d::Zero();  ///< where the target stopped or dropped
 };
 
+/// Whether `a` is the better outcome: it pots and `b` does not, or both do (or neither) and it passes deeper.
+inline bool isBetter(const StrokeEvaluation& a, const StrokeEvaluation& b)
+{
+  return a.pots != b.pots ? a.pots : a.margin > b.margin;
+}
+
 /// A margin no real shot reaches: strokes that cannot be played or predicted.
 constexpr double UNPLAYABLE_MARGIN = -10.0;
 

@@ -22,8 +22,7 @@ struct Search
   {
     ++best.evaluations;
     StrokeEvaluation evaluation = evaluateStroke(stroke, best.candidate.target, best.candidate.pocket, context);
-    if (evaluation.pots > best.evaluation.pots ||
-        (evaluation.pots == best.evaluation.pots && evaluation.margin > best.evaluation.margin))
+    if (isBetter(evaluation, best.evaluation))
     {
       best.evaluation = evaluation;
       best.candidate.stroke = stroke;

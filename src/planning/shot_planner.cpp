@@ -70,11 +70,7 @@ std::vector<RefinedShot> refineCandidates(const CandidateSearch& search, const P
     report(context, {evaluations, pots, 0.0});
   }
   std::stable_sort(refined.begin(), refined.end(),
-                   [](const RefinedShot& a, const RefinedShot& b)
-                   {
-                     return a.evaluation.pots > b.evaluation.pots ||
-                            (a.evaluation.pots == b.evaluation.pots && a.evaluation.margin > b.evaluation.margin);
-                   });
+                   [](const RefinedShot& a, const RefinedShot& b) { return isBetter(a.evaluation, b.evaluation); });
   return refined;
 }
 
@@ -165,7 +161,7 @@ std::string noPotExplanation(const CandidateSearch& search, const std::vector<Re
                      " cut thinner than 80°, " + std::to_string(search.cue_blocked) +
                      " where the cue cannot clear the balls and rails";
   if (refined.empty())
-    return "no direct shot to try (" + text + ")";
+    return "no shot to try (" + text + ")";
   const RefinedShot& closest = refined.front();
   return "no shot found that pots (" + text + "; " + std::to_string(refined.size()) +
          " refined): the closest, ball \"" + closest.candidate.target + "\" into pocket " +

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <optional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,21 @@ struct ExecutionNoise
   double a = 0.5e-3;                  ///< m, of the hit point across the cue
   double b = 0.5e-3;                  ///< m, of the hit point up
 };
+
+/// The stroke a robot plays when it means `nominal`: independent Gaussian errors of the noise's σ, in the order φ,
+/// θ, V, a, b (the offsets' σ in metres, turned into radii of a ball of `radius`). `random`: a standard engine.
+template <class Random>
+Stroke noisyStroke(const Stroke& nominal, const ExecutionNoise& noise, double radius, Random& random)
+{
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  Stroke stroke = nominal;
+  stroke.phi += noise.phi * gauss(random);
+  stroke.theta += noise.theta * gauss(random);
+  stroke.speed += noise.speed * gauss(random);
+  stroke.a += noise.a / radius * gauss(random);
+  stroke.b += noise.b / radius * gauss(random);
+  return stroke;
+}
 
 /// What the robot can do. The cue is a cylinder behind the tip that must touch no other ball and pass above the
 /// rails where it crosses them.
