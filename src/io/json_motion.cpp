@@ -244,9 +244,8 @@ Expected<json> solveBallMotion(const json& request, const SolverOptions& options
   return predict(setup.value(), position.value(), v.value(), omega.value());
 }
 
-Expected<StrikeSetup> strikeSetup(const json& request, const SolverOptions& options)
+Expected<StrikeSetup> withMotion(Expected<CueStrike> strike, const json& request, const SolverOptions& options)
 {
-  auto strike = cueStrikeFromJson(request);
   if (!strike)
     return strike.error();
   const CueStrike& s = strike.value();
@@ -254,6 +253,11 @@ Expected<StrikeSetup> strikeSetup(const json& request, const SolverOptions& opti
   if (!setup)
     return setup.error();
   return StrikeSetup{s, setup.value()};
+}
+
+Expected<StrikeSetup> strikeSetup(const json& request, const SolverOptions& options)
+{
+  return withMotion(cueStrikeFromJson(request), request, options);
 }
 
 Expected<json> solveShot(const json& request, const SolverOptions& options)

@@ -38,6 +38,8 @@ struct StrikeSetup
   MotionSetup motion;
 };
 Expected<StrikeSetup> strikeSetup(const json& request, const SolverOptions& options);
+/// The table and motion of a request read after `strike` (its fields already read, or its error passed on).
+Expected<StrikeSetup> withMotion(Expected<CueStrike> strike, const json& request, const SolverOptions& options);
 /// object[key] as [x, y].
 Expected<Eigen::Vector2d> vector2(const json& object, const std::string& key);
 /// A ball on the cloth from {"position": [x, y], "v": [x, y, z], "omega": [x, y, z]} (v and omega default to 0;

@@ -149,16 +149,14 @@ Expected<PlanRequest> planRequest(const json& request, double radius)
 
 Expected<ShotConfiguration> configurationOf(const json& request, const SolverOptions& options)
 {
-  auto physics = strikePhysicsFromJson(request);
-  if (!physics)
-    return physics.error();
-  const CueStrike& s = physics.value();
-  auto motion = motionSetup(request, options, &s.table_contact, BallProperties{s.ball_mass, s.ball_radius});
-  if (!motion)
-    return motion.error();
+  auto setup = withMotion(strikePhysicsFromJson(request), request, options);
+  if (!setup)
+    return setup.error();
   auto contact = ballContactFromJson(request);
   if (!contact)
     return contact.error();
+  const CueStrike& s = setup.value().strike;
+  const MotionSetup& motion = setup.value().motion;
   ShotConfiguration c;
   c.cue_mass = s.cue_mass;
   c.cue_end_mass = s.cue_end_mass;
@@ -166,9 +164,9 @@ Expected<ShotConfiguration> configurationOf(const json& request, const SolverOpt
   c.ball_radius = s.ball_radius;
   c.cue_contact = s.cue_contact;
   c.stiffness_ratio = s.stiffness_ratio;
-  c.table = motion.value().table;
+  c.table = motion.table;
   c.ball_contact = contact.value();
-  c.motion = motion.value().parameters;
+  c.motion = motion.parameters;
   c.solver = options;
   return c;
 }
