@@ -158,13 +158,7 @@ ShotPlannerServer::NodeAccess ShotPredictorNode::plannerAccess()
   ShotPlannerServer::NodeAccess access;
   access.configure = [this](const std::vector<std::string>& names, const std::vector<double>& values,
                             PlanningSettings& planning) { return configurationWith(names, values, &planning); };
-  access.table = [this](const TableState& table)
-  {
-    if (!table.balls.empty())
-      return table;
-    std::lock_guard<std::mutex> lock(table_mutex_);
-    return latest_table_;
-  };
+  access.table = [this](const TableState& table) { return tableFor(table); };
   access.place_table = [this](const TableState& table) -> Expected<std::vector<TableBall>>
   {
     if (Status status = checkTable(table); !status)
@@ -182,10 +176,10 @@ void ShotPredictorNode::storeTable(const TableState::ConstPtr& table)
   latest_table_ = *table;
 }
 
-TableState ShotPredictorNode::tableFor(const PredictShot::Request& request) const
+TableState ShotPredictorNode::tableFor(const TableState& given) const
 {
-  if (!request.table.balls.empty())
-    return request.table;
+  if (!given.balls.empty())
+    return given;
   std::lock_guard<std::mutex> lock(table_mutex_);
   return latest_table_;
 }
@@ -215,33 +209,29 @@ Expected<std::vector<TableBall>> ShotPredictorNode::placeTable(const TableState&
 
 Expected<CuePlacement> ShotPredictorNode::placeCue(const PredictShot::Request& request, bool cue_ball_in_table) const
 {
-  const ros::Duration timeout(settings_.tf_timeout);
   geometry_msgs::PoseStamped pose;
-  geometry_msgs::PointStamped ball;
   try
   {
-    pose = buffer_.transform(request.cue_pose, settings_.target_frame, timeout);
+    pose = buffer_.transform(request.cue_pose, settings_.target_frame, ros::Duration(settings_.tf_timeout));
   }
   catch (const tf2::TransformException& e)
   {
     return invalidArgument("cue_pose.header.frame_id", std::string("no transform to the table frame: ") + e.what());
   }
-  try
+  Eigen::Vector2d ball = Eigen::Vector2d::Zero();  // given by the table when it holds the cue ball
+  if (!cue_ball_in_table)
   {
-    if (!cue_ball_in_table)
-      ball = buffer_.transform(request.ball_position, settings_.target_frame, timeout);
-  }
-  catch (const tf2::TransformException& e)
-  {
-    return invalidArgument("ball_position.header.frame_id",
-                           std::string("no transform to the table frame: ") + e.what());
+    auto placed = placePoint(request.ball_position, "ball_position");
+    if (!placed)
+      return placed.error();
+    ball = placed.value();
   }
   const auto& q = pose.pose.orientation;
   CuePlacement cue;
   cue.tip = Eigen::Vector3d(pose.pose.position.x, pose.pose.position.y, pose.pose.position.z);
   cue.direction = Eigen::Quaterniond(q.w, q.x, q.y, q.z).normalized() * Eigen::Vector3d::UnitX();
   cue.speed = request.cue_speed;
-  cue.ball = Eigen::Vector2d(ball.point.x, ball.point.y);
+  cue.ball = ball;
   return cue;
 }
 
@@ -254,7 +244,7 @@ bool ShotPredictorNode::predict(PredictShot::Request& request, PredictShot::Resp
     ROS_WARN("predict_shot: %s", response.message.c_str());
     return true;  // a domain error is an answer, not a failed call
   };
-  const TableState table = tableFor(request);
+  const TableState table = tableFor(request.table);
   if (Status status = firstError({checkTable(table), checkRequest(request, hasCueBall(table))}); !status)
     return fail(status.error());
   auto configuration = configurationWith(request.override_names, request.override_values);

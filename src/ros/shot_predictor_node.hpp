@@ -35,8 +35,8 @@ private:
   /// The cue's pose and the cue ball's position in the table frame; the cue ball's position is left for the table
   /// to give when it holds the cue ball.
   Expected<CuePlacement> placeCue(const PredictShot::Request& request, bool cue_ball_in_table) const;
-  /// The request's table, or the latest one received on ~table_state when the request's is empty.
-  TableState tableFor(const PredictShot::Request& request) const;
+  /// `given` (a request's or a goal's table), or the latest one received on ~table_state when it is empty.
+  TableState tableFor(const TableState& given) const;
   /// The table's balls in the table frame (at rest on the cloth).
   Expected<std::vector<TableBall>> placeTable(const TableState& table) const;
   void storeTable(const TableState::ConstPtr& table);
