@@ -1,4 +1,7 @@
 #include "billiard_shot_planner/motion/table.hpp"
+#include <algorithm>
+#include <cmath>
+
 #include "billiard_shot_planner/core/validation.hpp"
 
 namespace billiard_shot_planner
@@ -7,6 +10,12 @@ std::vector<Pocket> sixPockets(double length, double width)
 {
   const double x = 0.5 * length, y = 0.5 * width;
   return {{{-x, -y}, 0.06}, {{x, -y}, 0.06}, {{-x, y}, 0.06}, {{x, y}, 0.06}, {{0.0, -y}, 0.065}, {{0.0, y}, 0.065}};
+}
+
+double cushionReach(const Table& table, double radius)
+{
+  const double sin_theta = std::clamp((table.cushion_height - radius) / radius, -1.0, 1.0);
+  return radius * std::sqrt(1.0 - sin_theta * sin_theta);
 }
 
 Status validate(const Table& table, const std::string& field)

@@ -55,12 +55,6 @@ std::optional<double> firstRisingRoot(double c, double b, double a, double lo, d
 }
 }  // namespace
 
-double cushionReach(const Table& table, double radius)
-{
-  const double sin_theta = std::clamp((table.cushion_height - radius) / radius, -1.0, 1.0);
-  return radius * std::sqrt(1.0 - sin_theta * sin_theta);
-}
-
 namespace
 {
 /// Guard samples of an airborne ball's approach to a nose, over the stretch where its centre is within a radius

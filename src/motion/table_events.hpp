@@ -13,10 +13,6 @@ namespace detail
 /// cushions, far above the round-off of a position after a cushion hit (1e-16 m).
 constexpr double CONTACT_DISTANCE = 1e-9;
 
-/// The horizontal distance between the ball's centre and a cushion nose when they touch with the ball on the
-/// cloth: R cos θ with sin θ = (h − R)/R, the nose being h above the cloth.
-double cushionReach(const Table& table, double radius);
-
 /// Unit normal of the cushion contact (from the nose towards the ball's centre) for cushion `rail` (0: −x, 1: +x,
 /// 2: −y, 3: +y), with the ball's centre at `centre` (table frame) touching the nose.
 Eigen::Vector3d cushionNormal(int rail, const Table& table, const Eigen::Vector3d& centre);

@@ -152,9 +152,7 @@ std::optional<Route> bankRoute(const Eigen::Vector2d& object, const Eigen::Vecto
   const double half = 0.5 * (axis == 0 ? table.length : table.width);
   if (side * hole(axis) >= half - 1e-9)
     return std::nullopt;  // the pocket is on this cushion
-  // The nose touches the ball at height h: its centre is then R cos(asin((h − R)/R)) from the nose line.
-  const double sin_nose = std::clamp((table.cushion_height - radius) / radius, -1.0, 1.0);
-  const double line = side * (half - radius * std::sqrt(1.0 - sin_nose * sin_nose));
+  const double line = side * (half - cushionReach(table, radius));
   Eigen::Vector2d mirrored = hole;
   mirrored(axis) = 2.0 * line - hole(axis);
   const double t = (line - object(axis)) / (mirrored(axis) - object(axis));

@@ -38,6 +38,10 @@ struct Table
 /// Checks dimensions, pockets and contact laws; the error names the field ("table.cushion.friction").
 Status validate(const Table& table, const std::string& field = "table");
 
+/// The horizontal distance between a ball's centre and a cushion nose when they touch with the ball on the cloth:
+/// R cos θ with sin θ = (h − R)/R, the nose being h above the cloth.
+double cushionReach(const Table& table, double radius);
+
 /// The lowest cushion nose that can hold a ball on the table, in ball radii: 1 − 1/√2 ≈ 0.293. Below it the
 /// contact normal rises more than 45° above the cloth (sin α = (R − h)/R), and even a frictionless, perfectly
 /// elastic nose leaves a ball that meets it head-on moving on into the rail (v' = v (sin²α − e cos²α), e ≤ 1) and
