@@ -195,6 +195,7 @@ json shotJson(const PlannedShot& shot)
   return {{"target", shot.target},
           {"pocket", shot.pocket},
           {"bank_cushion", shot.bank_cushion >= 0 ? json(shot.bank_cushion) : json(nullptr)},
+          {"cue_ball_path", toString(shot.cue_ball_path)},
           {"cue", strokeJson(shot.stroke)},
           {"cue_pose", {{"tip", toVector(shot.cue.tip)}, {"direction", toVector(shot.cue.direction)}}},
           {"margin", shot.margin},

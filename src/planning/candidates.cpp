@@ -54,31 +54,6 @@ double initialSpeed(double cue_path, double object_path, double cut, const PlanC
   return std::clamp(cue_ball / BALL_OVER_CUE, limits.min_speed, limits.max_speed);
 }
 
-/// Room the cue keeps from the balls and the rails in a planned stroke: three standard deviations of its aim and
-/// elevation noise over its length, so that noisy strokes rarely touch what the nominal one clears (at the
-/// lowest elevation that clears without it, a quarter of the noisy strokes put the cue into a rail).
-double clearanceMargin(const PlanContext& context)
-{
-  const ExecutionNoise& noise = context.request.noise;
-  return 3.0 * std::hypot(noise.phi, noise.theta) * context.request.limits.cue_length;
-}
-
-/// The lowest elevation from the limits' minimum whose cue clears the balls and the rails with the clearance
-/// margin, if any.
-std::optional<double> clearElevation(Stroke stroke, const PlanContext& context)
-{
-  const RobotLimits& limits = context.request.limits;
-  const double margin = clearanceMargin(context);
-  for (double theta = limits.min_theta; theta <= limits.max_theta + 1e-12; theta += ELEVATION_STEP)
-  {
-    stroke.theta = theta;
-    auto cue = placeStroke(stroke, context.cue_ball, context.radius());
-    if (cue && cueClears(cue.value(), context, margin))
-      return theta;
-  }
-  return std::nullopt;
-}
-
 std::vector<int> pocketsToTry(const PlanContext& context)
 {
   if (context.request.pocket >= 0)
@@ -121,13 +96,14 @@ void addCandidate(const TableBall& target, int pocket, const Route& route, const
   }
   // A ball in the way is tried last rather than dropped: the simulation decides whether the shot still pots (the
   // cue ball may drive the ball in the way into the target, a kiss may clear it).
-  const bool blocked = !pathIsClear(context.cue_ball, ghost, target.id, context) ||
-                       !routeIsClear(object, hole, route, target.id, context);
+  const bool cue_path_blocked = !pathIsClear(context.cue_ball, ghost, target.id, context);
+  const bool route_blocked = !routeIsClear(object, hole, route, target.id, context);
+  const bool blocked = cue_path_blocked || route_blocked;
   search.blocked += blocked;
   Stroke stroke;
   stroke.phi = std::atan2(aim.y(), aim.x());
   stroke.speed = initialSpeed(aim.norm(), route.length, cut, context);
-  const auto theta = clearElevation(stroke, context);
+  const auto theta = clearElevation(stroke, context, context.request.limits.min_theta);
   if (!theta)
   {
     ++search.cue_blocked;
@@ -136,7 +112,8 @@ void addCandidate(const TableBall& target, int pocket, const Route& route, const
   stroke.theta = *theta;
   const double penalty = (blocked ? BLOCKED_PENALTY : 1.0) * (route.bank_cushion >= 0 ? BANK_PENALTY : 1.0);
   const double difficulty = penalty * (aim.norm() + route.length) / std::max(std::cos(cut), 0.05);
-  search.candidates.push_back({target.id, pocket, stroke, cut, difficulty, route.bank_cushion});
+  search.candidates.push_back({target.id, pocket, stroke, cut, difficulty, route.bank_cushion, CueBallPath::Straight,
+                               ghost, line, cue_path_blocked, route_blocked});
 }
 
 /// The route off cushion `cushion` to the pocket at `hole`, by the mirror image of the pocket in the line the
@@ -175,6 +152,26 @@ void addCandidates(const TableBall& target, int pocket, const PlanContext& conte
       addCandidate(target, pocket, *route, context, search);
 }
 }  // namespace
+
+double clearanceMargin(const PlanContext& context)
+{
+  const ExecutionNoise& noise = context.request.noise;
+  return 3.0 * std::hypot(noise.phi, noise.theta) * context.request.limits.cue_length;
+}
+
+std::optional<double> clearElevation(Stroke stroke, const PlanContext& context, double from)
+{
+  const RobotLimits& limits = context.request.limits;
+  const double margin = clearanceMargin(context);
+  for (double theta = std::max(from, limits.min_theta); theta <= limits.max_theta + 1e-12; theta += ELEVATION_STEP)
+  {
+    stroke.theta = theta;
+    auto cue = placeStroke(stroke, context.cue_ball, context.radius());
+    if (cue && cueClears(cue.value(), context, margin))
+      return theta;
+  }
+  return std::nullopt;
+}
 
 CandidateSearch candidateShots(const PlanContext& context)
 {

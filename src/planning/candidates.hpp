@@ -1,6 +1,7 @@
 #pragma once
 
 // Candidate shots: where to aim before any refinement.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,11 @@ struct Candidate
   double cut = 0.0;         ///< rad, between the cue ball's path and the target's
   double difficulty = 0.0;  ///< smaller is easier: the paths' length over the cut's cosine
   int bank_cushion = -1;    ///< the cushion the target banks off (0: −x, 1: +x, 2: −y, 3: +y); −1: straight in
+  CueBallPath cue_ball_path = CueBallPath::Straight;
+  Eigen::Vector2d ghost = Eigen::Vector2d::Zero();  ///< where the cue ball's centre meets the target
+  Eigen::Vector2d line = Eigen::Vector2d::UnitX();  ///< the direction the target must leave in
+  bool cue_path_blocked = false;                    ///< a ball stands on the cue ball's straight path to the ghost
+  bool route_blocked = false;                       ///< a ball stands on the target's way to its pocket
 };
 
 /// Why the candidates are what they are (for the explanation of a plan that finds nothing).
@@ -33,6 +39,15 @@ struct CandidateSearch
 /// The thinnest cut tried: beyond it the object ball takes a sliver of the cue ball's speed and the throw's error
 /// dominates.
 constexpr double MAX_CUT = 80.0 * M_PI / 180.0;
+
+/// Room the cue keeps from the balls and the rails in a planned stroke: three standard deviations of its aim and
+/// elevation noise over its length, so that noisy strokes rarely touch what the nominal one clears (at the lowest
+/// elevation that clears without it, a quarter of the noisy strokes put the cue into a rail).
+double clearanceMargin(const PlanContext& context);
+
+/// The lowest elevation from `from` (at least the limits' minimum, in steps of 2°) whose cue clears the balls and the
+/// rails with the clearance margin, if any within the limits.
+std::optional<double> clearElevation(Stroke stroke, const PlanContext& context, double from);
 
 /// Pots by the ghost ball: for each target (the requested one, or every object ball) and pocket (the requested one,
 /// or every pocket), straight in and off each cushion (by the pocket's mirror image; banks after the direct pots of

@@ -5,6 +5,7 @@
 
 #include "billiard_shot_planner/core/validation.hpp"
 #include "candidates.hpp"
+#include "detour_candidates.hpp"
 #include "noisy_rollouts.hpp"
 #include "refinement.hpp"
 
@@ -53,21 +54,34 @@ bool enoughGoodShots(const std::vector<RefinedShot>& refined, const PlanContext&
   return static_cast<std::size_t>(good) >= RANKED_SHOTS;
 }
 
-/// Refines candidates, easiest first, while the refinement's share of the budget lasts (the first always).
+/// Refines candidates, easiest first, while the refinement's share of the budget lasts (the first always). A
+/// candidate whose cue ball's straight path is blocked is refined as it is (a kiss or a combination may pot it) and
+/// by its detours: a kick, a massé, a jump (the rollouts then rank them).
 std::vector<RefinedShot> refineCandidates(const CandidateSearch& search, const PlanContext& context,
                                           Clock::time_point start, int& evaluations)
 {
   const Clock::time_point until = after(start, REFINEMENT_SHARE * context.request.budget);
   std::vector<RefinedShot> refined;
   int pots = 0;
-  for (const Candidate& candidate : search.candidates)
+  auto refineOne = [&](const Candidate& candidate)
   {
-    if (!refined.empty() && (context.shouldStop(until) || enoughGoodShots(refined, context)))
-      break;
     refined.push_back(refine(candidate, context, refined.empty() ? context.deadline : until));
     evaluations += refined.back().evaluations;
     pots += refined.back().evaluation.pots;
     report(context, {evaluations, pots, 0.0});
+  };
+  for (const Candidate& candidate : search.candidates)
+  {
+    if (!refined.empty() && (context.shouldStop(until) || enoughGoodShots(refined, context)))
+      break;
+    refineOne(candidate);
+    if (!candidate.cue_path_blocked || candidate.route_blocked)
+      continue;
+    const DetourSearch detours = detourCandidates(candidate, context, until);
+    evaluations += detours.evaluations;
+    for (const Candidate& detour : detours.candidates)
+      if (!context.shouldStop(until))
+        refineOne(detour);
   }
   std::stable_sort(refined.begin(), refined.end(),
                    [](const RefinedShot& a, const RefinedShot& b) { return isBetter(a.evaluation, b.evaluation); });
@@ -82,6 +96,7 @@ PlannedShot plannedShot(const RefinedShot& shot, const PlanContext& context)
   planned.target = shot.candidate.target;
   planned.pocket = shot.candidate.pocket;
   planned.bank_cushion = shot.candidate.bank_cushion;
+  planned.cue_ball_path = shot.candidate.cue_ball_path;
   planned.margin = shot.evaluation.margin;
   return planned;
 }
@@ -185,6 +200,22 @@ PlanContext makeContext(const PlanRequest& request, const ShotConfiguration& con
 }
 
 }  // namespace planning
+
+const char* toString(CueBallPath path)
+{
+  switch (path)
+  {
+    case CueBallPath::Kick:
+      return "kick";
+    case CueBallPath::Masse:
+      return "masse";
+    case CueBallPath::Jump:
+      return "jump";
+    case CueBallPath::Straight:
+      break;
+  }
+  return "straight";
+}
 
 Expected<ShotPlan> planShot(const PlanRequest& request, const ShotConfiguration& configuration)
 {

@@ -19,6 +19,7 @@ CuePlan toMessage(const PlannedShot& shot, const std::string& frame)
   plan.target = shot.target;
   plan.pocket = shot.pocket;
   plan.bank_cushion = shot.bank_cushion;
+  plan.cue_ball_path = toString(shot.cue_ball_path);
   plan.cue_pose.header.frame_id = frame;
   plan.cue_pose.pose.position.x = shot.cue.tip.x();
   plan.cue_pose.pose.position.y = shot.cue.tip.y();

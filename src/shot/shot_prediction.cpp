@@ -126,8 +126,7 @@ Expected<TableTrajectory> moveBalls(const BallState& cue_ball, const std::vector
 }
 }  // namespace
 
-Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfiguration& c,
-                                  const std::vector<TableBall>& others)
+Expected<CueStrikeResult> strikeBall(const CuePlacement& cue, const ShotConfiguration& c)
 {
   if (Status status = firstError(
           {requireFinite(cue.tip, "cue_pose.position"), requireDirection(cue.direction, "cue_pose.orientation"),
@@ -149,9 +148,16 @@ Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfigurati
   strike.cue_contact = c.cue_contact;
   strike.table_contact = c.table.cloth;
   strike.stiffness_ratio = c.stiffness_ratio;
-  auto struck = solve(strike, c.solver);
+  return solve(strike, c.solver);
+}
+
+Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfiguration& c,
+                                  const std::vector<TableBall>& others)
+{
+  auto struck = strikeBall(cue, c);
   if (!struck)
     return struck.error();
+  const Eigen::Vector3d centre(cue.ball.x(), cue.ball.y(), c.ball_radius);
   BallState start;
   start.position = centre;
   start.velocity = struck.value().velocity;
@@ -167,8 +173,8 @@ Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfigurati
     return error;
   }
   BallTrajectory cue_ball = table.value().balls.front();
-  return ShotOutcome{std::move(struck).value(), std::move(cue_ball), centre + c.ball_radius * normal.value(),
-                     std::move(table).value()};
+  const Eigen::Vector3d hit_point = centre + c.ball_radius * struck.value().hit_normal;
+  return ShotOutcome{std::move(struck).value(), std::move(cue_ball), hit_point, std::move(table).value()};
 }
 
 }  // namespace billiard_shot_planner

@@ -214,6 +214,63 @@ TEST(ShotPlanner, ABankIsPlannedWhenNoStraightRouteIsPlayable)
   EXPECT_GT(plan.best.success_probability, 0.0);
 }
 
+// The target 0.15 m from the (+x, +y) corner, the cue ball 0.8 m behind its ghost ball at a 10° cut, and a third
+// ball on that line, 0.45 of the way, 0.3 R to its side: the straight shot hits it (a combination may still pot).
+// With the cue allowed up to 60°, the planner also goes around it: off a cushion (the kick) and over it (the jump).
+// Every detour pots when replayed independently, the cue ball's first contact is the target, and the ball in the
+// way ends where it stood (to 1e-9 m: nothing touched it).
+// A jump is checked to have gone over: its cue ball's centre passes within 2R of the obstacle's on the cloth plane
+// (so it cannot have passed beside it) and its flight is what carries it (its highest centre is above 2R over the
+// cloth, as far as a ball leaving at v_z climbs: v_z²/2g).
+TEST(ShotPlanner, AroundABallInTheWayItPlansAKickAndAJump)
+{
+  bsp::PlanRequest request = cutShot(0.15, 0.8, 10.0);
+  const Eigen::Vector2d cue = request.balls[0].state.position.head<2>();
+  const Eigen::Vector2d object = request.balls[1].state.position.head<2>();
+  const Eigen::Vector2d ghost = object + 2.0 * R * (object - bsp::Table{}.pockets[TOP_RIGHT].centre).normalized();
+  const Eigen::Vector2d along = (ghost - cue).normalized();
+  const Eigen::Vector2d obstacle = cue + 0.45 * (ghost - cue) + 0.3 * R * Eigen::Vector2d(-along.y(), along.x());
+  request.balls.push_back(ballAt("two", obstacle.x(), obstacle.y()));
+  request.pocket = TOP_RIGHT;
+  request.limits.max_theta = 60.0 * M_PI / 180.0;
+  request.budget = 4.0;
+  const bsp::ShotPlan plan = planned(request);
+  ASSERT_TRUE(plan.found) << plan.explanation;
+  std::vector<bsp::PlannedShot> shots{plan.best};
+  shots.insert(shots.end(), plan.alternatives.begin(), plan.alternatives.end());
+  std::vector<bsp::CueBallPath> kinds;
+  for (const bsp::PlannedShot& shot : shots)
+  {
+    SCOPED_TRACE(bsp::toString(shot.cue_ball_path));
+    kinds.push_back(shot.cue_ball_path);
+    EXPECT_TRUE(replayPots(shot.cue, request, "one", TOP_RIGHT));
+    if (shot.cue_ball_path == bsp::CueBallPath::Straight)
+      continue;
+    const auto outcome = bsp::predictShot(shot.cue, {}, {request.balls[1], request.balls[2]});
+    ASSERT_TRUE(outcome.ok());
+    const bsp::TableTrajectory& run = outcome.value().table;
+    EXPECT_EQ(bsp::firstContact(run, 0), "one");
+    EXPECT_NEAR((run.balls[2].finalState().position.head<2>() - obstacle).norm(), 0.0, 1e-9);
+    if (shot.cue_ball_path == bsp::CueBallPath::Masse)
+      EXPECT_GT(std::abs(shot.stroke.a), 0.1);  // a hit off the centre with a raised cue
+    if (shot.cue_ball_path != bsp::CueBallPath::Jump)
+      continue;
+    double nearest = INFINITY, highest = 0.0;
+    for (const bsp::TrajectorySample& sample : run.balls[0].sample(1e-3))
+    {
+      if (sample.time < run.ball_impacts.front().time)
+        nearest = std::min(nearest, (sample.state.position.head<2>() - obstacle).norm());
+      highest = std::max(highest, sample.state.position.z());
+    }
+    const double v_z = outcome.value().strike.velocity.z();
+    EXPECT_LT(nearest, 2.0 * R);
+    EXPECT_GT(highest - R, 2.0 * R * std::sqrt(1.0 - std::pow(nearest / (2.0 * R), 2)));
+    EXPECT_LE(highest - R, v_z * v_z / (2.0 * bsp::MotionParameters{}.gravity) + 1e-6);
+  }
+  for (bsp::CueBallPath kind : {bsp::CueBallPath::Kick, bsp::CueBallPath::Jump})
+    EXPECT_NE(std::find(kinds.begin(), kinds.end(), kind), kinds.end()) << bsp::toString(kind);
+}
+
 TEST(ShotPlanner, BadRequestsAreRefusedNamingTheField)
 {
   const bsp::PlanRequest good = cutShot(0.4, 0.5, 0.0);

@@ -103,6 +103,18 @@ struct PlanRequest
   PlanHooks hooks;
 };
 
+/// How the cue ball reaches the target.
+enum class CueBallPath
+{
+  Straight,  ///< along the cloth, straight (the ghost ball's aim)
+  Kick,      ///< off one cushion first
+  Masse,     ///< curving around a ball in the way (an elevated cue hitting off the centre)
+  Jump,      ///< over a ball in the way (an elevated cue drives the ball into the cloth, which throws it up)
+};
+
+/// "straight", "kick", "masse", "jump".
+const char* toString(CueBallPath path);
+
 /// A shot and how likely it is to pot under the noise.
 struct PlannedShot
 {
@@ -111,6 +123,7 @@ struct PlannedShot
   std::string target;
   int pocket = -1;
   int bank_cushion = -1;  ///< the cushion the target banks off (0: −x, 1: +x, 2: −y, 3: +y); −1: straight in
+  CueBallPath cue_ball_path = CueBallPath::Straight;
   /// m: how far inside its pocket's capture circle the target passes in the noise-free shot (negative: by how much
   /// it misses)
   double margin = 0.0;

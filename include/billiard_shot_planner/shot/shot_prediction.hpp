@@ -72,6 +72,10 @@ struct ShotOutcome
   TableTrajectory table;
 };
 
+/// The strike alone, predictShot's first part: the hit point where the cue axis meets the ball and the ball's
+/// velocity and spin right after the cue leaves it. Errors as predictShot's.
+Expected<CueStrikeResult> strikeBall(const CuePlacement& cue, const ShotConfiguration& configuration);
+
 /// The whole prediction: the hit point where the cue axis meets the ball, the strike by the multiple-impact
 /// engine, and the path of every ball on the table (`others`: the balls besides the cue ball, at rest or moving;
 /// none may be called CUE_BALL_ID). Pure function, thread-safe. Errors name the cue ball's fields as the request's
