@@ -1,11 +1,12 @@
 // The shot planner against a ghost-ball baseline, side by side in one run, on seeded random tables (1, 3, 7 and 15
-// object balls, a quarter each) and three hand-made layouts whose only pot is blocked by a ball on the cue ball's
-// line to the ghost ball. For each planner and layout: whether it found a pot (the baseline: whether a ghost-ball
-// shot with clear paths existed), the pot probability of the shot it returns measured by fresh noisy rollouts drawn
-// here (the planner's default ExecutionNoise, the same draws for both planners, replayed at the configuration's own
-// tolerance), the planning time, and the planner's own estimate against the fresh measurement. Prints one markdown
-// row per group, and the layouts whose estimate and fresh measurement disagree by more than three standard
-// deviations.
+// object balls, a quarter each), three hand-made layouts whose only pot is blocked by a ball on the cue ball's
+// line to the ghost ball ("blocked": a combination can still pot them), and four where that ball stands a little to
+// the side of the line ("detour": the straight shot hits it thin and pots nothing; a kick, a massé or a jump can). For
+// each planner and layout: whether it found a pot (the baseline: whether a ghost-ball shot with clear paths existed),
+// the pot probability of the shot it returns measured by fresh noisy rollouts drawn here (the planner's default
+// ExecutionNoise, the same draws for both planners, replayed at the configuration's own tolerance), the planning time,
+// and the planner's own estimate against the fresh measurement. Prints one markdown row per group, and the layouts
+// whose estimate and fresh measurement disagree by more than three standard deviations.
 //
 // A pot: the target (the plan's, or the baseline's chosen ball) drops in any pocket (the requested one in the
 // blocked layouts) and the cue ball does not drop. A plan that found no pot is measured on the closest attempt it
@@ -15,8 +16,8 @@
 // planner's rule, without its margin). A noisy stroke whose cue touches a ball or a rail is a miss for both.
 //
 // Layout k of the random ones is drawn by std::mt19937(k) and planned with seed k; the blocked ones follow as
-// layouts N, N + 1, N + 2. Arguments: [layouts N = 200] [fresh rollouts = 1000] [planner threads = 1] [one layout
-// index: plan only that one and print both shots].
+// layouts N to N + 2, the detour ones as N + 3 to N + 6. Arguments: [layouts N = 200] [fresh rollouts = 1000] [planner
+// threads = 1] [one layout index: plan only that one and print both shots].
 //
 // Built with -DBILLIARD_SHOT_PLANNER_BENCHMARKS=ON (scripts/bench runs it); by hand from the repository's root:
 //   g++ -O2 -std=c++17 -Iinclude -I/usr/include/eigen3 bench/plan_benchmark.cpp -Lbuild/devel/lib
@@ -66,6 +67,7 @@ struct ChosenShot
   bool found = false;
   bsp::Stroke stroke;
   std::string target;
+  const char* path = "straight";  ///< how the cue ball reaches the target (the planner's CueBallPath)
 };
 
 struct LayoutResult
@@ -152,23 +154,30 @@ Eigen::Vector2d rotated(const Eigen::Vector2d& v, double angle)
 
 /// Ball "1" `distance` m from corner pocket `corner` towards the table's centre, the cue ball `behind` m from its
 /// ghost ball at `cut_deg` to the pot's line, and ball "2" on the line from the cue ball to the ghost ball, at
-/// `blocker_share` of the way.
-Layout blockedLayout(unsigned index, int corner, double distance, double cut_deg, double behind, double blocker_share)
+/// `blocker_share` of the way, `side` ball radii to the left of it.
+Layout blockedLayout(unsigned index, int corner, double distance, double cut_deg, double behind, double blocker_share,
+                     double side = 0.0, const char* group = "blocked")
 {
   const Eigen::Vector2d pocket = CONFIGURATION.table.pockets[static_cast<std::size_t>(corner)].centre;
   const Eigen::Vector2d line = -pocket.normalized();
   const Eigen::Vector2d object = pocket + distance * line;
   const Eigen::Vector2d ghost = object + 2.0 * R * line;
   const Eigen::Vector2d cue = ghost + behind * rotated(line, cut_deg * M_PI / 180.0);
-  const Eigen::Vector2d blocker = cue + blocker_share * (ghost - cue);
-  return {"blocked", index, {ballAt(bsp::CUE_BALL_ID, cue), ballAt("1", object), ballAt("2", blocker)}, "1", corner};
+  const Eigen::Vector2d along = (ghost - cue).normalized();
+  const Eigen::Vector2d blocker =
+      cue + blocker_share * (ghost - cue) + side * R * Eigen::Vector2d(-along.y(), along.x());
+  return {group, index, {ballAt(bsp::CUE_BALL_ID, cue), ballAt("1", object), ballAt("2", blocker)}, "1", corner};
 }
 
 std::vector<Layout> blockedLayouts(unsigned first_index)
 {
   return {blockedLayout(first_index, CORNER_PX_PY, 0.3, 20.0, 0.8, 0.5),
           blockedLayout(first_index + 1, CORNER_MX_MY, 0.25, 35.0, 1.0, 0.3),
-          blockedLayout(first_index + 2, CORNER_MX_PY, 0.4, 0.0, 0.6, 0.7)};
+          blockedLayout(first_index + 2, CORNER_MX_PY, 0.4, 0.0, 0.6, 0.7),
+          blockedLayout(first_index + 3, CORNER_PX_PY, 0.15, 10.0, 0.8, 0.45, 0.3, "detour"),
+          blockedLayout(first_index + 4, CORNER_PX_PY, 0.2, 30.0, 0.7, 0.4, 0.5, "detour"),
+          blockedLayout(first_index + 5, CORNER_MX_MY, 0.25, -15.0, 0.9, 0.5, -0.4, "detour"),
+          blockedLayout(first_index + 6, CORNER_MX_PY, 0.2, 20.0, 0.6, 0.35, 0.6, "detour")};
 }
 
 double distanceToSegment(const Eigen::Vector2d& point, const Eigen::Vector2d& from, const Eigen::Vector2d& to)
@@ -342,7 +351,8 @@ LayoutResult measure(const Layout& layout, const Settings& settings)
     std::fprintf(stderr, "layout %u: %s\n", layout.seed, plan.error().describe().c_str());
     std::exit(1);
   }
-  result.planner = {plan.value().found, plan.value().best.stroke, plan.value().best.target};
+  result.planner = {plan.value().found, plan.value().best.stroke, plan.value().best.target,
+                    bsp::toString(plan.value().best.cue_ball_path)};
   result.planner_estimate = plan.value().best.success_probability;
   result.planner_estimate_rollouts = plan.value().best.rollouts;
   result.planning_seconds = plan.value().seconds;
@@ -474,6 +484,16 @@ void printBaselineWins(const std::vector<LayoutResult>& results)
     std::printf("- none\n");
 }
 
+/// The hand-made layouts one by one: the planner's kind of shot beside both fresh probabilities.
+void printHandMade(const std::vector<LayoutResult>& results)
+{
+  std::printf("\nHand-made layouts (planner: kind, fresh P, its estimate; baseline: fresh P):\n");
+  for (const LayoutResult& r : results)
+    if (r.group == "blocked" || r.group == "detour")
+      std::printf("- %s %u: %s %.3f (estimate %.3f); baseline %.3f\n", r.group.c_str(), r.seed, r.planner.path,
+                  r.planner_fresh, r.planner_estimate, r.baseline_fresh);
+}
+
 void printTable(const std::vector<LayoutResult>& results, const Settings& settings)
 {
   std::map<std::string, std::vector<LayoutResult>> groups;
@@ -483,10 +503,12 @@ void printTable(const std::vector<LayoutResult>& results, const Settings& settin
   for (int count : OBJECT_BALL_COUNTS)
     if (groups.count(groupName(count)))
       printRow(groupName(count), groups[groupName(count)]);
-  if (groups.count("blocked"))
-    printRow("blocked", groups["blocked"]);
+  for (const char* group : {"blocked", "detour"})
+    if (groups.count(group))
+      printRow(group, groups[group]);
   printDisagreements(results, settings.fresh_rollouts);
   printBaselineWins(results);
+  printHandMade(results);
 }
 
 void printShot(const char* name, const ChosenShot& shot, double fresh)
@@ -546,8 +568,9 @@ int main(int argc, char** argv)
   std::vector<LayoutResult> results;
   for (const Layout& layout : layouts)
     results.push_back(measure(layout, settings));
-  std::printf("%d random layouts + 3 blocked, budget %.1f s, %d planner thread(s), %d fresh rollouts per shot\n\n",
-              settings.random_layouts, PLAN_BUDGET, settings.threads, settings.fresh_rollouts);
+  std::printf(
+      "%d random layouts + 3 blocked + 4 detour, budget %.1f s, %d planner thread(s), %d fresh rollouts per shot\n\n",
+      settings.random_layouts, PLAN_BUDGET, settings.threads, settings.fresh_rollouts);
   printTable(results, settings);
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("\nFresh rollouts that could not be predicted (counted as misses): %d\n", unpredictable_rollouts);

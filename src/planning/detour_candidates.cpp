@@ -158,7 +158,7 @@ private:
       const Eigen::Vector3d& p = path[i].state.position;
       const double distance = (p - target).norm();
       if (distance <= contact && i > 0)
-        return contact_at(path[i - 1].state.position, p, target, result);
+        return contactAt(path[i - 1].state.position, p, target, result);
       for (const Eigen::Vector2d& obstacle : obstacles_)
         result.clearance = std::min(result.clearance,
                                     (p - Eigen::Vector3d(obstacle.x(), obstacle.y(), centre_height)).norm() - contact);
@@ -172,8 +172,8 @@ private:
   }
 
   /// The contact between two samples, where the distance to the target crosses 2R (linearly interpolated).
-  Approach contact_at(const Eigen::Vector3d& before, const Eigen::Vector3d& after, const Eigen::Vector3d& target,
-                      Approach result) const
+  Approach contactAt(const Eigen::Vector3d& before, const Eigen::Vector3d& after, const Eigen::Vector3d& target,
+                     Approach result) const
   {
     const double contact = 2.0 * context_.radius();
     const double d0 = (before - target).norm(), d1 = (after - target).norm();

@@ -63,7 +63,7 @@ std::vector<RefinedShot> refineCandidates(const CandidateSearch& search, const P
   const Clock::time_point until = after(start, REFINEMENT_SHARE * context.request.budget);
   std::vector<RefinedShot> refined;
   int pots = 0;
-  auto refineOne = [&](const Candidate& candidate)
+  auto refine_one = [&](const Candidate& candidate)
   {
     refined.push_back(refine(candidate, context, refined.empty() ? context.deadline : until));
     evaluations += refined.back().evaluations;
@@ -74,14 +74,14 @@ std::vector<RefinedShot> refineCandidates(const CandidateSearch& search, const P
   {
     if (!refined.empty() && (context.shouldStop(until) || enoughGoodShots(refined, context)))
       break;
-    refineOne(candidate);
+    refine_one(candidate);
     if (!candidate.cue_path_blocked || candidate.route_blocked)
       continue;
     const DetourSearch detours = detourCandidates(candidate, context, until);
     evaluations += detours.evaluations;
     for (const Candidate& detour : detours.candidates)
       if (!context.shouldStop(until))
-        refineOne(detour);
+        refine_one(detour);
   }
   std::stable_sort(refined.begin(), refined.end(),
                    [](const RefinedShot& a, const RefinedShot& b) { return isBetter(a.evaluation, b.evaluation); });
