@@ -252,7 +252,9 @@ TEST(ShotPlanner, AroundABallInTheWayItPlansAKickAndAJump)
     EXPECT_EQ(bsp::firstContact(run, 0), "one");
     EXPECT_NEAR((run.balls[2].finalState().position.head<2>() - obstacle).norm(), 0.0, 1e-9);
     if (shot.cue_ball_path == bsp::CueBallPath::Masse)
+    {
       EXPECT_GT(std::abs(shot.stroke.a), 0.1);  // a hit off the centre with a raised cue
+    }
     if (shot.cue_ball_path != bsp::CueBallPath::Jump)
       continue;
     double nearest = INFINITY, highest = 0.0;
