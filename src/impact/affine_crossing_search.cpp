@@ -186,6 +186,8 @@ bool AffineCrossingSearch::taylorExcludes(std::size_t g, double a, Sample ga, do
 bool AffineCrossingSearch::isolate(double a, const PerGuard<Sample>& at_a, double b, const PerGuard<Sample>& at_b,
                                    int depth)
 {
+  if (std::chrono::steady_clock::now() > deadline_)
+    return false;
   PerGuard<std::size_t>& undecided = pending_[depth + 1];
   undecided.clear();
   bool found = false;

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <boost/container/small_vector.hpp>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -63,6 +64,12 @@ public:
 
   /// Length of the steps.
   double stepLength() const { return stepper_->step(); }
+
+  /// The solve's wall-clock bound: a step whose halvings run past it ends its search there (its zeros are then
+  /// incomplete, and the solver's own check of the bound, before the next step, fails the solve). Without it, a
+  /// step whose guards stay undecided halves every interval down to the last refinement, which took 15 s for one
+  /// fuzzed problem under the sanitizers.
+  void setDeadline(std::chrono::steady_clock::time_point deadline) { deadline_ = deadline; }
 
 private:
   /// An affine guard's value and its first two time derivatives at one instant.
@@ -134,6 +141,7 @@ private:
   PerGuard<LinearPhaseStepper::GuardBounds> bounds_;  ///< on the guards' second and third derivatives
   PerGuard<double> noise_;                            ///< round-off of the guards' values
   double t_ = 0.0;                                    ///< start of the next step
+  std::chrono::steady_clock::time_point deadline_ = std::chrono::steady_clock::time_point::max();
   /// The guards at the ends of the step, the start's at ends_[start_]: the next step starts where this one ended.
   std::array<PerGuard<Sample>, 2> ends_;
   std::size_t start_ = 0;

@@ -283,6 +283,7 @@ private:
                                         [](const std::optional<AffineGuard>& form) { return form.has_value(); });
     if (!all_affine || options_.record_samples || !affine_search_.start(closed_form_, affine_guards_, t_))
       return advanceWith(closed_form_, guards, /*separation_floor=*/0.0, /*omega: the closed form's own=*/0.0);
+    affine_search_.setDeadline(deadline_);
     while (true)
     {
       if (++step_count_ > options_.max_steps)
