@@ -233,7 +233,8 @@ TEST(ShotPlanner, AroundABallInTheWayItPlansAKickAndAJump)
   request.balls.push_back(ballAt("two", obstacle.x(), obstacle.y()));
   request.pocket = TOP_RIGHT;
   request.limits.max_theta = 60.0 * M_PI / 180.0;
-  request.budget = 120.0;  // never reached (the plan ends when its rollouts are done): the plan is the seed's alone
+  request.budget =
+      60.0;  // the largest: never reached (the plan ends when its rollouts are done), so the plan is the seed's alone
   const bsp::ShotPlan plan = planned(request);
   ASSERT_TRUE(plan.found) << plan.explanation;
   std::vector<bsp::PlannedShot> shots{plan.best};
