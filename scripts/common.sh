@@ -26,7 +26,10 @@ PACKAGES=(
   clang libclang-rt-14-dev
 )
 
-log() { printf '\n\033[1m== %s\033[0m\n' "$*"; }
+# Each heading says how long the whole run (scripts/test and the scripts it calls) has taken so far.
+BSP_STARTED="${BSP_STARTED:-$(date +%s)}"
+export BSP_STARTED
+log() { printf '\n\033[1m== %s\033[0m (%d s)\n' "$*" "$(($(date +%s) - BSP_STARTED))"; }
 
 install_packages() {
   local missing=()
