@@ -1,0 +1,78 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "billiard_shot_planner/core/expected.hpp"
+
+namespace billiard_shot_planner
+{
+/// One unknown of a fit: its name, where the search starts and the bounds physics puts on it.
+struct FitParameter
+{
+  std::string name;
+  double start = 0.0;
+  double lower = -std::numeric_limits<double>::infinity();
+  double upper = std::numeric_limits<double>::infinity();
+};
+
+/// How a fit searches and what it calls determined.
+struct FitOptions
+{
+  /// A parameter is identifiable when the data pin it to better than this fraction of its own size (its standard
+  /// deviation over max(|value|, scale)); the others are held at their start and reported as not identifiable.
+  double identifiable_relative_sigma = 0.5;
+  /// Huber's loss beyond this many standard deviations (outliers count linearly); 0 for plain least squares.
+  double robust_loss_sigmas = 0.0;
+  /// Points the search may start from: the parameters' own start and starts − 1 more spread over the bounds (a
+  /// Halton sequence, on a log scale where a positive range spans more than a factor of ten; a parameter with an
+  /// infinite bound keeps its start). The local fit runs from the best few by cost, and the best end is the answer:
+  /// the residuals of an impact are not convex in its constants.
+  int starts = 1;
+  int max_iterations = 50;  ///< of each local fit
+  /// Central differences with this step relative to max(|value|, scale): the residuals come from an integration
+  /// with its own tolerance, so the step stays well above it.
+  double relative_step = 1e-4;
+};
+
+struct FittedParameter
+{
+  std::string name;
+  double value = 0.0;
+  /// Standard deviation from the curvature of the fit, (JᵀJ)⁻¹ with the residuals in standard deviations; infinite
+  /// for a parameter that is not identifiable.
+  double sigma = std::numeric_limits<double>::infinity();
+  bool identifiable = false;
+  bool at_bound = false;  ///< the best point lies on one of its bounds
+};
+
+struct FitResult
+{
+  std::vector<FittedParameter> parameters;  ///< in the order asked
+  /// Correlations of the identifiable parameters (rows and columns in the order asked, NaN for the others).
+  Eigen::MatrixXd correlation;
+  Eigen::VectorXd residuals;  ///< at the best point, in standard deviations
+  double initial_cost = 0.0;  ///< ½ Σ r² at the start
+  double final_cost = 0.0;    ///< ½ Σ r² at the best point
+  bool converged = false;
+  std::string message;  ///< the optimiser's report in one line
+  int iterations = 0;
+};
+
+/// The residuals of a fit at given parameter values, each in standard deviations of its observation (so that
+/// Σ r² is a χ²). Returns false where the model cannot be evaluated (the point is then refused).
+using ResidualFunction = std::function<bool(const std::vector<double>& values, Eigen::VectorXd& residuals)>;
+
+/// Bounded nonlinear least squares (Ceres' trust region, central differences) from one or several starts. A
+/// parameter the curvature at the best point leaves undetermined (FitOptions::identifiable_relative_sigma) goes back
+/// to its start and the others are fitted again; each value is reported with its standard deviation and the
+/// correlations. Errors: InvalidArgument naming the parameter (NaN, lower > upper, start outside its bounds,
+/// duplicate name) or `residual_count` (fewer residuals than parameters), NumericalFailure when the residuals
+/// cannot be evaluated at the start.
+Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters, int residual_count,
+                                    const ResidualFunction& residuals, const FitOptions& options = {});
+
+}  // namespace billiard_shot_planner

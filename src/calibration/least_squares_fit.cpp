@@ -1,0 +1,276 @@
+#include "billiard_shot_planner/calibration/least_squares_fit.hpp"
+
+#include <ceres/ceres.h>
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <set>
+
+#include "parameter_sensitivity.hpp"
+#include "starting_points.hpp"
+
+namespace billiard_shot_planner
+{
+namespace
+{
+/// The user's residual function as Ceres' dynamic cost functor over one block of all the parameters.
+class ResidualFunctor
+{
+public:
+  ResidualFunctor(const ResidualFunction& residuals, int parameter_count, int residual_count)
+      : residuals_(residuals), values_(static_cast<std::size_t>(parameter_count)), residual_count_(residual_count)
+  {
+  }
+
+  bool operator()(double const* const* parameters, double* out) const
+  {
+    std::copy(parameters[0], parameters[0] + values_.size(), values_.begin());
+    if (!residuals_(values_, scratch_) || scratch_.size() != residual_count_ || !scratch_.allFinite())
+      return false;
+    std::copy(scratch_.data(), scratch_.data() + residual_count_, out);
+    return true;
+  }
+
+private:
+  const ResidualFunction& residuals_;
+  mutable std::vector<double> values_;
+  mutable Eigen::VectorXd scratch_;
+  int residual_count_;
+};
+
+constexpr int MAX_STARTS = 10000;
+
+using CostFunction = ceres::DynamicNumericDiffCostFunction<ResidualFunctor, ceres::CENTRAL>;
+
+std::unique_ptr<CostFunction> makeCost(const ResidualFunction& residuals, int parameter_count, int residual_count,
+                                       const FitOptions& options)
+{
+  ceres::NumericDiffOptions difference;
+  difference.relative_step_size = options.relative_step;
+  auto cost = std::make_unique<CostFunction>(new ResidualFunctor(residuals, parameter_count, residual_count),
+                                             ceres::TAKE_OWNERSHIP, difference);
+  cost->AddParameterBlock(parameter_count);
+  cost->SetNumResiduals(residual_count);
+  return cost;
+}
+
+Status validate(const std::vector<FitParameter>& parameters, int residual_count, const FitOptions& options)
+{
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < parameters.size(); ++i)
+  {
+    const FitParameter& p = parameters[i];
+    const std::string field = p.name.empty() ? "parameters[" + std::to_string(i) + "]" : p.name;
+    if (p.name.empty())
+      return invalidArgument(field, "has no name");
+    if (!names.insert(p.name).second)
+      return invalidArgument(field, "is fitted twice");
+    if (!std::isfinite(p.start) || std::isnan(p.lower) || std::isnan(p.upper))
+      return invalidArgument(field, "start must be finite and its bounds numbers");
+    if (p.lower > p.upper)
+      return invalidArgument(field, "lower bound above its upper bound");
+    if (p.start < p.lower || p.start > p.upper)
+      return invalidArgument(field, "start outside its bounds");
+  }
+  if (parameters.empty())
+    return invalidArgument("parameters", "nothing to fit");
+  if (residual_count < static_cast<int>(parameters.size()))
+    return invalidArgument("residual_count", "fewer observations (" + std::to_string(residual_count) +
+                                                 ") than parameters (" + std::to_string(parameters.size()) + ")");
+  if (!(options.identifiable_relative_sigma > 0.0) || !(options.robust_loss_sigmas >= 0.0) ||
+      options.max_iterations < 1 || !(options.relative_step > 0.0 && options.relative_step <= 0.1) ||
+      options.starts < 1 || options.starts > MAX_STARTS)
+    return invalidArgument("options",
+                           "identifiable_relative_sigma > 0, robust_loss_sigmas ≥ 0, max_iterations ≥ 1, "
+                           "relative_step in (0, 0.1] and starts in [1, 10000] are required");
+  return {};
+}
+
+/// The residuals and their Jacobian at `values`; false where they cannot be evaluated.
+bool evaluate(const ResidualFunction& residuals, std::vector<double> values, int residual_count,
+              const FitOptions& options, Eigen::VectorXd& r, Eigen::MatrixXd& jacobian)
+{
+  ceres::Problem problem;
+  const int n = static_cast<int>(values.size());
+  problem.AddResidualBlock(makeCost(residuals, n, residual_count, options).release(), nullptr, values.data());
+  ceres::CRSMatrix crs;
+  std::vector<double> out;
+  double cost = 0.0;
+  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &out, nullptr, &crs))
+    return false;
+  r = Eigen::Map<const Eigen::VectorXd>(out.data(), static_cast<Eigen::Index>(out.size()));
+  jacobian = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
+  for (int row = 0; row < crs.num_rows; ++row)
+    for (int k = crs.rows[row]; k < crs.rows[row + 1]; ++k)
+      jacobian(row, crs.cols[k]) = crs.values[k];
+  return jacobian.allFinite();
+}
+
+/// Fits the parameters not in `held` from `values`, in place; returns the optimiser's summary.
+ceres::Solver::Summary fitFree(const ResidualFunction& residuals, const std::vector<FitParameter>& parameters,
+                               const std::vector<int>& held, int residual_count, const FitOptions& options,
+                               std::vector<double>& values)
+{
+  const int n = static_cast<int>(values.size());
+  ceres::Problem problem;
+  ceres::LossFunction* loss =
+      options.robust_loss_sigmas > 0.0 ? new ceres::HuberLoss(options.robust_loss_sigmas) : nullptr;
+  problem.AddResidualBlock(makeCost(residuals, n, residual_count, options).release(), loss, values.data());
+  for (int i = 0; i < n; ++i)
+  {
+    if (std::isfinite(parameters[i].lower))
+      problem.SetParameterLowerBound(values.data(), i, parameters[i].lower);
+    if (std::isfinite(parameters[i].upper))
+      problem.SetParameterUpperBound(values.data(), i, parameters[i].upper);
+  }
+  if (static_cast<int>(held.size()) == n)
+    problem.SetParameterBlockConstant(values.data());
+  else if (!held.empty())
+    problem.SetManifold(values.data(), new ceres::SubsetManifold(n, held));
+  ceres::Solver::Options solver;
+  solver.linear_solver_type = ceres::DENSE_QR;
+  solver.max_num_iterations = options.max_iterations;
+  solver.logging_type = ceres::SILENT;
+  solver.minimizer_progress_to_stdout = false;
+  // The residuals come from integrations at a relative tolerance near 1e-8: a tighter stop would chase their noise.
+  solver.function_tolerance = 1e-8;
+  solver.parameter_tolerance = 1e-8;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver, &problem, &summary);
+  return summary;
+}
+
+std::vector<int> complement(const std::vector<int>& free, int n)
+{
+  std::vector<int> held;
+  for (int i = 0; i < n; ++i)
+    if (std::find(free.begin(), free.end(), i) == free.end())
+      held.push_back(i);
+  return held;
+}
+
+/// A local fit from one point: the values it ends at, which of them it fitted, and its residuals and Jacobian there.
+struct LocalFit
+{
+  std::vector<double> values;
+  std::vector<int> free;
+  Eigen::VectorXd residuals;
+  Eigen::MatrixXd jacobian;
+  ceres::Solver::Summary summary;
+  double cost() const { return 0.5 * residuals.squaredNorm(); }
+};
+
+/// Fits from `values`: every parameter the residuals depend on at all is fitted; where the curvature at the best
+/// point leaves one undetermined, it goes back to its own start and the others are fitted again. (Far from the
+/// data the curvature may understate what the data determine, so the decision waits for the best point.)
+bool fitFrom(const ResidualFunction& residuals, const std::vector<FitParameter>& parameters, int residual_count,
+             const FitOptions& options, std::vector<double> values, LocalFit& fit)
+{
+  const int n = static_cast<int>(parameters.size());
+  if (!evaluate(residuals, values, residual_count, options, fit.residuals, fit.jacobian))
+    return false;
+  fit.free.clear();
+  for (int i = 0; i < n; ++i)
+    if (fit.jacobian.col(i).squaredNorm() > 0.0)
+      fit.free.push_back(i);
+  for (int round = 0; round < 3 && !fit.free.empty(); ++round)
+  {
+    fit.summary = fitFree(residuals, parameters, complement(fit.free, n), residual_count, options, values);
+    if (!evaluate(residuals, values, residual_count, options, fit.residuals, fit.jacobian))
+      return false;
+    const std::vector<int> still = detail::identifiableParameters(
+        fit.jacobian, detail::parameterScales(parameters, values), options.identifiable_relative_sigma, fit.free);
+    if (still.size() == fit.free.size())
+      break;
+    for (int i : fit.free)
+      if (std::find(still.begin(), still.end(), i) == still.end())
+        values[i] = parameters[i].start;
+    fit.free = still;
+  }
+  fit.values = values;
+  return true;
+}
+
+/// The starting points in order of their cost, those where the model fails left out.
+std::vector<std::vector<double>> rankedStarts(const ResidualFunction& residuals,
+                                              const std::vector<FitParameter>& parameters, int residual_count,
+                                              const FitOptions& options)
+{
+  std::vector<std::pair<double, std::vector<double>>> ranked;
+  Eigen::VectorXd r;
+  for (const std::vector<double>& point : detail::startingPoints(parameters, options.starts))
+    if (residuals(point, r) && r.size() == residual_count && r.allFinite())
+      ranked.emplace_back(r.squaredNorm(), point);
+  std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::vector<double>> points;
+  points.reserve(ranked.size());
+  for (auto& entry : ranked)
+    points.push_back(std::move(entry.second));
+  return points;
+}
+
+FitResult report(const std::vector<FitParameter>& parameters, const LocalFit& fit)
+{
+  const int n = static_cast<int>(parameters.size());
+  const detail::Covariance covariance = detail::covarianceOf(fit.jacobian, fit.free);
+  FitResult result;
+  result.correlation = Eigen::MatrixXd::Constant(n, n, std::numeric_limits<double>::quiet_NaN());
+  for (int i = 0; i < n; ++i)
+  {
+    FittedParameter fitted;
+    fitted.name = parameters[i].name;
+    fitted.value = fit.values[i];
+    fitted.identifiable = std::find(fit.free.begin(), fit.free.end(), i) != fit.free.end();
+    fitted.sigma = covariance.sigma(i);
+    fitted.at_bound = fit.values[i] <= parameters[i].lower || fit.values[i] >= parameters[i].upper;
+    result.parameters.push_back(fitted);
+    for (int j = 0; j < n; ++j)
+      result.correlation(i, j) = covariance.correlation(i, j);
+  }
+  result.residuals = fit.residuals;
+  result.final_cost = fit.cost();
+  result.converged = fit.free.empty() || fit.summary.termination_type == ceres::CONVERGENCE;
+  result.message = fit.free.empty() ? "nothing the data determine" : fit.summary.BriefReport();
+  result.iterations = static_cast<int>(fit.summary.iterations.size());
+  return result;
+}
+
+/// Local fits from this many of the best starting points.
+constexpr std::size_t LOCAL_FITS = 3;
+
+}  // namespace
+
+Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters, int residual_count,
+                                    const ResidualFunction& residuals, const FitOptions& options)
+{
+  if (Status status = validate(parameters, residual_count, options); !status)
+    return status.error();
+  std::vector<double> start(parameters.size());
+  std::transform(parameters.begin(), parameters.end(), start.begin(), [](const FitParameter& p) { return p.start; });
+  Eigen::VectorXd r;
+  if (!residuals(start, r) || r.size() != residual_count || !r.allFinite())
+    return Error{ErrorCode::NumericalFailure, "parameters", "the model cannot be evaluated at the start"};
+
+  LocalFit best, candidate;
+  bool found = false;
+  const std::vector<std::vector<double>> points = rankedStarts(residuals, parameters, residual_count, options);
+  // A fit whose χ² = Σr² is within three standard deviations of its expectation (the residual count) explains the
+  // data to their noise: no other start can do meaningfully better.
+  const double explained = residual_count + 3.0 * std::sqrt(2.0 * residual_count);
+  for (std::size_t k = 0; k < std::min(points.size(), LOCAL_FITS) && !(found && 2.0 * best.cost() <= explained); ++k)
+    if (fitFrom(residuals, parameters, residual_count, options, points[k], candidate) &&
+        (!found || candidate.cost() < best.cost()))
+    {
+      best = candidate;
+      found = true;
+    }
+  if (!found)
+    return Error{ErrorCode::NumericalFailure, "parameters", "the model cannot be evaluated along the fit"};
+  FitResult result = report(parameters, best);
+  result.initial_cost = 0.5 * r.squaredNorm();
+  return result;
+}
+
+}  // namespace billiard_shot_planner
