@@ -41,6 +41,7 @@ private:
 };
 
 constexpr int MAX_STARTS = 10000;
+constexpr int MAX_THREADS = 64;
 
 using CostFunction = ceres::DynamicNumericDiffCostFunction<ResidualFunctor, ceres::CENTRAL>;
 
@@ -54,6 +55,24 @@ std::unique_ptr<CostFunction> makeCost(const ResidualFunction& residuals, int pa
   cost->AddParameterBlock(parameter_count);
   cost->SetNumResiduals(residual_count);
   return cost;
+}
+
+/// What a fit minimises: its residual blocks, their total count, and how.
+struct Model
+{
+  const std::vector<ResidualBlock>& blocks;
+  int residual_count;
+  const FitOptions& options;
+};
+
+/// Each block as a residual block of its own on the one parameter block `values` (so that Ceres may evaluate them
+/// on several threads).
+void addBlocks(ceres::Problem& problem, const Model& model, double* values, int parameter_count,
+               ceres::LossFunction* loss = nullptr)
+{
+  for (const ResidualBlock& block : model.blocks)
+    problem.AddResidualBlock(makeCost(block.residuals, parameter_count, block.count, model.options).release(), loss,
+                             values);
 }
 
 Status validate(const std::vector<FitParameter>& parameters, int residual_count, const FitOptions& options)
@@ -81,43 +100,45 @@ Status validate(const std::vector<FitParameter>& parameters, int residual_count,
                                                  ") than parameters (" + std::to_string(parameters.size()) + ")");
   if (!(options.identifiable_relative_sigma > 0.0) || !(options.robust_loss_sigmas >= 0.0) ||
       options.max_iterations < 1 || !(options.relative_step > 0.0 && options.relative_step <= 0.1) ||
-      options.starts < 1 || options.starts > MAX_STARTS)
+      options.starts < 1 || options.starts > MAX_STARTS || options.threads < 1 || options.threads > MAX_THREADS)
     return invalidArgument("options",
                            "identifiable_relative_sigma > 0, robust_loss_sigmas ≥ 0, max_iterations ≥ 1, "
-                           "relative_step in (0, 0.1] and starts in [1, 10000] are required");
+                           "relative_step in (0, 0.1], starts in [1, 10000] and threads in [1, 64] are required");
   return {};
 }
 
-/// The residuals and their Jacobian at `values`; false where they cannot be evaluated.
-bool evaluate(const ResidualFunction& residuals, std::vector<double> values, int residual_count,
-              const FitOptions& options, Eigen::VectorXd& r, Eigen::MatrixXd& jacobian)
+/// The residuals at `values`, and their Jacobian when `jacobian` is given; false where they cannot be evaluated.
+bool evaluate(const Model& model, std::vector<double> values, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian = nullptr)
 {
   ceres::Problem problem;
-  const int n = static_cast<int>(values.size());
-  problem.AddResidualBlock(makeCost(residuals, n, residual_count, options).release(), nullptr, values.data());
+  addBlocks(problem, model, values.data(), static_cast<int>(values.size()));
+  ceres::Problem::EvaluateOptions evaluation;
+  evaluation.num_threads = model.options.threads;
   ceres::CRSMatrix crs;
   std::vector<double> out;
   double cost = 0.0;
-  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &out, nullptr, &crs))
+  if (!problem.Evaluate(evaluation, &cost, &out, nullptr, jacobian ? &crs : nullptr))
     return false;
   r = Eigen::Map<const Eigen::VectorXd>(out.data(), static_cast<Eigen::Index>(out.size()));
-  jacobian = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
+  if (!jacobian)
+    return r.allFinite();
+  *jacobian = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
   for (int row = 0; row < crs.num_rows; ++row)
     for (int k = crs.rows[row]; k < crs.rows[row + 1]; ++k)
-      jacobian(row, crs.cols[k]) = crs.values[k];
-  return jacobian.allFinite();
+      (*jacobian)(row, crs.cols[k]) = crs.values[k];
+  return r.allFinite() && jacobian->allFinite();
 }
 
 /// Fits the parameters not in `held` from `values`, in place; returns the optimiser's summary.
-ceres::Solver::Summary fitFree(const ResidualFunction& residuals, const std::vector<FitParameter>& parameters,
-                               const std::vector<int>& held, int residual_count, const FitOptions& options,
-                               std::vector<double>& values)
+ceres::Solver::Summary fitFree(const Model& model, const std::vector<FitParameter>& parameters,
+                               const std::vector<int>& held, std::vector<double>& values)
 {
+  const FitOptions& options = model.options;
   const int n = static_cast<int>(values.size());
   ceres::Problem problem;
   ceres::LossFunction* loss =
       options.robust_loss_sigmas > 0.0 ? new ceres::HuberLoss(options.robust_loss_sigmas) : nullptr;
-  problem.AddResidualBlock(makeCost(residuals, n, residual_count, options).release(), loss, values.data());
+  addBlocks(problem, model, values.data(), n, loss);
   for (int i = 0; i < n; ++i)
   {
     if (std::isfinite(parameters[i].lower))
@@ -132,6 +153,7 @@ ceres::Solver::Summary fitFree(const ResidualFunction& residuals, const std::vec
   ceres::Solver::Options solver;
   solver.linear_solver_type = ceres::DENSE_QR;
   solver.max_num_iterations = options.max_iterations;
+  solver.num_threads = options.threads;
   solver.logging_type = ceres::SILENT;
   solver.minimizer_progress_to_stdout = false;
   // The residuals come from integrations at a relative tolerance near 1e-8: a tighter stop would chase their noise.
@@ -165,11 +187,10 @@ struct LocalFit
 /// Fits from `values`: every parameter the residuals depend on at all is fitted; where the curvature at the best
 /// point leaves one undetermined, it goes back to its own start and the others are fitted again. (Far from the
 /// data the curvature may understate what the data determine, so the decision waits for the best point.)
-bool fitFrom(const ResidualFunction& residuals, const std::vector<FitParameter>& parameters, int residual_count,
-             const FitOptions& options, std::vector<double> values, LocalFit& fit)
+bool fitFrom(const Model& model, const std::vector<FitParameter>& parameters, std::vector<double> values, LocalFit& fit)
 {
   const int n = static_cast<int>(parameters.size());
-  if (!evaluate(residuals, values, residual_count, options, fit.residuals, fit.jacobian))
+  if (!evaluate(model, values, fit.residuals, &fit.jacobian))
     return false;
   fit.free.clear();
   for (int i = 0; i < n; ++i)
@@ -177,11 +198,11 @@ bool fitFrom(const ResidualFunction& residuals, const std::vector<FitParameter>&
       fit.free.push_back(i);
   for (int round = 0; round < 3 && !fit.free.empty(); ++round)
   {
-    fit.summary = fitFree(residuals, parameters, complement(fit.free, n), residual_count, options, values);
-    if (!evaluate(residuals, values, residual_count, options, fit.residuals, fit.jacobian))
+    fit.summary = fitFree(model, parameters, complement(fit.free, n), values);
+    if (!evaluate(model, values, fit.residuals, &fit.jacobian))
       return false;
     const std::vector<int> still = detail::identifiableParameters(
-        fit.jacobian, detail::parameterScales(parameters, values), options.identifiable_relative_sigma, fit.free);
+        fit.jacobian, detail::parameterScales(parameters, values), model.options.identifiable_relative_sigma, fit.free);
     if (still.size() == fit.free.size())
       break;
     for (int i : fit.free)
@@ -194,14 +215,12 @@ bool fitFrom(const ResidualFunction& residuals, const std::vector<FitParameter>&
 }
 
 /// The starting points in order of their cost, those where the model fails left out.
-std::vector<std::vector<double>> rankedStarts(const ResidualFunction& residuals,
-                                              const std::vector<FitParameter>& parameters, int residual_count,
-                                              const FitOptions& options)
+std::vector<std::vector<double>> rankedStarts(const Model& model, const std::vector<FitParameter>& parameters)
 {
   std::vector<std::pair<double, std::vector<double>>> ranked;
   Eigen::VectorXd r;
-  for (const std::vector<double>& point : detail::startingPoints(parameters, options.starts))
-    if (residuals(point, r) && r.size() == residual_count && r.allFinite())
+  for (const std::vector<double>& point : detail::startingPoints(parameters, model.options.starts))
+    if (evaluate(model, point, r))
       ranked.emplace_back(r.squaredNorm(), point);
   std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<std::vector<double>> points;
@@ -245,23 +264,36 @@ constexpr std::size_t LOCAL_FITS = 3;
 Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters, int residual_count,
                                     const ResidualFunction& residuals, const FitOptions& options)
 {
+  return fitLeastSquares(parameters, std::vector<ResidualBlock>{{residual_count, residuals}}, options);
+}
+
+Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
+                                    const std::vector<ResidualBlock>& blocks, const FitOptions& options)
+{
+  int residual_count = 0;
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+  {
+    if (blocks[b].count < 1 || !blocks[b].residuals)
+      return invalidArgument("blocks[" + std::to_string(b) + "]", "needs at least one residual and a function");
+    residual_count += blocks[b].count;
+  }
   if (Status status = validate(parameters, residual_count, options); !status)
     return status.error();
+  const Model model{blocks, residual_count, options};
   std::vector<double> start(parameters.size());
   std::transform(parameters.begin(), parameters.end(), start.begin(), [](const FitParameter& p) { return p.start; });
   Eigen::VectorXd r;
-  if (!residuals(start, r) || r.size() != residual_count || !r.allFinite())
+  if (!evaluate(model, start, r))
     return Error{ErrorCode::NumericalFailure, "parameters", "the model cannot be evaluated at the start"};
 
   LocalFit best, candidate;
   bool found = false;
-  const std::vector<std::vector<double>> points = rankedStarts(residuals, parameters, residual_count, options);
+  const std::vector<std::vector<double>> points = rankedStarts(model, parameters);
   // A fit whose χ² = Σr² is within three standard deviations of its expectation (the residual count) explains the
   // data to their noise: no other start can do meaningfully better.
   const double explained = residual_count + 3.0 * std::sqrt(2.0 * residual_count);
   for (std::size_t k = 0; k < std::min(points.size(), LOCAL_FITS) && !(found && 2.0 * best.cost() <= explained); ++k)
-    if (fitFrom(residuals, parameters, residual_count, options, points[k], candidate) &&
-        (!found || candidate.cost() < best.cost()))
+    if (fitFrom(model, parameters, points[k], candidate) && (!found || candidate.cost() < best.cost()))
     {
       best = candidate;
       found = true;

@@ -157,11 +157,17 @@ Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfigurati
   auto struck = strikeBall(cue, c);
   if (!struck)
     return struck.error();
+  return predictShotAfter(cue, std::move(struck).value(), c, others);
+}
+
+Expected<ShotOutcome> predictShotAfter(const CuePlacement& cue, CueStrikeResult struck, const ShotConfiguration& c,
+                                       const std::vector<TableBall>& others)
+{
   const Eigen::Vector3d centre(cue.ball.x(), cue.ball.y(), c.ball_radius);
   BallState start;
   start.position = centre;
-  start.velocity = struck.value().velocity;
-  start.angular_velocity = struck.value().angular_velocity;
+  start.velocity = struck.velocity;
+  start.angular_velocity = struck.angular_velocity;
   MotionParameters motion = c.motion;
   motion.impact = c.solver;
   auto table = moveBalls(start, others, c, motion);
@@ -173,8 +179,8 @@ Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfigurati
     return error;
   }
   BallTrajectory cue_ball = table.value().balls.front();
-  const Eigen::Vector3d hit_point = centre + c.ball_radius * struck.value().hit_normal;
-  return ShotOutcome{std::move(struck).value(), std::move(cue_ball), hit_point, std::move(table).value()};
+  const Eigen::Vector3d hit_point = centre + c.ball_radius * struck.hit_normal;
+  return ShotOutcome{std::move(struck), std::move(cue_ball), hit_point, std::move(table).value()};
 }
 
 }  // namespace billiard_shot_planner

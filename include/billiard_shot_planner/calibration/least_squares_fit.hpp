@@ -33,6 +33,8 @@ struct FitOptions
   /// the residuals of an impact are not convex in its constants.
   int starts = 1;
   int max_iterations = 50;  ///< of each local fit
+  /// Threads that evaluate the residual blocks side by side (fitLeastSquares with blocks), at most 64.
+  int threads = 1;
   /// Central differences with this step relative to max(|value|, scale): the residuals come from an integration
   /// with its own tolerance, so the step stays well above it.
   double relative_step = 1e-4;
@@ -66,6 +68,14 @@ struct FitResult
 /// Σ r² is a χ²). Returns false where the model cannot be evaluated (the point is then refused).
 using ResidualFunction = std::function<bool(const std::vector<double>& values, Eigen::VectorXd& residuals)>;
 
+/// A group of residuals computed together (one observed shot's, say): how many, and the function that computes
+/// them. Blocks may be evaluated on different threads at once: each function must allow that.
+struct ResidualBlock
+{
+  int count = 0;
+  ResidualFunction residuals;
+};
+
 /// Bounded nonlinear least squares (Ceres' trust region, central differences) from one or several starts. A
 /// parameter the curvature at the best point leaves undetermined (FitOptions::identifiable_relative_sigma) goes back
 /// to its start and the others are fitted again; each value is reported with its standard deviation and the
@@ -74,5 +84,10 @@ using ResidualFunction = std::function<bool(const std::vector<double>& values, E
 /// cannot be evaluated at the start.
 Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters, int residual_count,
                                     const ResidualFunction& residuals, const FitOptions& options = {});
+
+/// The same over residual blocks, their residuals in the order of the blocks; also InvalidArgument naming a block
+/// ("blocks[2]") without residuals or function.
+Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
+                                    const std::vector<ResidualBlock>& blocks, const FitOptions& options = {});
 
 }  // namespace billiard_shot_planner

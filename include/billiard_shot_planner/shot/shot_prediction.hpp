@@ -83,4 +83,10 @@ Expected<CueStrikeResult> strikeBall(const CuePlacement& cue, const ShotConfigur
 Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfiguration& configuration,
                                   const std::vector<TableBall>& others = {});
 
+/// predictShot's second part: the balls' paths after a strike already solved by strikeBall(cue, configuration) (a
+/// fit of the motion's constants, which the strike does not depend on, solves each strike once).
+Expected<ShotOutcome> predictShotAfter(const CuePlacement& cue, CueStrikeResult struck,
+                                       const ShotConfiguration& configuration,
+                                       const std::vector<TableBall>& others = {});
+
 }  // namespace billiard_shot_planner

@@ -1,0 +1,151 @@
+// Track fits on tracks the model itself draws with other constants and a camera's noise (so the truth is known):
+// the constants come back within their σ and predict shots the fit never saw, a shot that never meets a cushion
+// says nothing of it, and bad tracks are refused by name.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "billiard_shot_planner/calibration/track_fit.hpp"
+#include "billiard_shot_planner/planning/stroke.hpp"
+
+namespace bsp = billiard_shot_planner;
+
+namespace
+{
+constexpr double R = 0.0286;
+constexpr double CAMERA_SIGMA = 0.002;  // m
+constexpr double FRAME = 1.0 / 30.0;    // s
+
+bsp::CuePlacement stroke(double x, double y, double phi_deg, double speed, double b)
+{
+  const auto cue = bsp::placeStroke({phi_deg * M_PI / 180.0, 5.0 * M_PI / 180.0, speed, 0.0, b}, {x, y}, R);
+  EXPECT_TRUE(cue.ok());
+  return cue.value();
+}
+
+bsp::ShotConfiguration truth()
+{
+  bsp::ShotConfiguration c;
+  c.motion.sliding_friction = 0.2;
+  c.motion.rolling_friction = 0.015;
+  c.table.cushion.restitution = 0.75;
+  return c;
+}
+
+/// The cue ball's track at 30 Hz for up to 3 s, each point off by the camera's noise.
+bsp::ObservedShot observed(const bsp::CuePlacement& cue, const bsp::ShotConfiguration& c, std::mt19937& rng)
+{
+  std::normal_distribution<double> noise(0.0, CAMERA_SIGMA);
+  const auto outcome = bsp::predictShot(cue, c);
+  EXPECT_TRUE(outcome.ok()) << outcome.error().describe();
+  bsp::ObservedShot shot{cue, {}, {}};
+  const double end = std::min(3.0, outcome->trajectory.duration());
+  for (double t = 0.0; t <= end; t += FRAME)
+    shot.tracks[bsp::CUE_BALL_ID].push_back(
+        {t, outcome->trajectory.at(t).position.head<2>() + Eigen::Vector2d(noise(rng), noise(rng))});
+  return shot;
+}
+
+/// Draw, follow and stun shots into the cushions at several angles and speeds.
+std::vector<bsp::CuePlacement> shotsIntoCushions()
+{
+  return {stroke(-0.6, 0.0, 0.0, 2.5, 0.0),   stroke(0.0, -0.3, 75.0, 2.0, 0.4),   stroke(0.5, 0.2, 150.0, 2.2, -0.4),
+          stroke(-0.3, 0.3, -40.0, 1.8, 0.2), stroke(0.2, -0.2, 200.0, 2.4, -0.2), stroke(0.8, 0.0, 100.0, 1.5, 0.3)};
+}
+
+const std::vector<bsp::FitParameter> MOTION_CONSTANTS = {{"motion.sliding_friction", 0.152479, 0.01, 1.0},
+                                                         {"motion.rolling_friction", 0.0209727, 0.001, 0.2},
+                                                         {"table.cushion.restitution", 0.85, 0.0, 1.0}};
+const double TRUTH[] = {0.2, 0.015, 0.75};
+}  // namespace
+
+TEST(TrackFit, RecoversTheConstantsAndPredictsShotsItNeverSaw)
+{
+  std::mt19937 rng(1);
+  std::vector<bsp::ObservedShot> shots;
+  for (const bsp::CuePlacement& cue : shotsIntoCushions())
+    shots.push_back(observed(cue, truth(), rng));
+  const auto fitted = bsp::fitTracks(bsp::ShotConfiguration{}, MOTION_CONSTANTS, shots, CAMERA_SIGMA);
+  ASSERT_TRUE(fitted.ok()) << fitted.error().describe();
+  const bsp::FitResult& fit = fitted->fit;
+  EXPECT_TRUE(fit.converged) << fit.message;
+  bsp::ShotConfiguration c;
+  for (int i = 0; i < 3; ++i)
+  {
+    const bsp::FittedParameter& p = fit.parameters[i];
+    std::printf("%s: %.5f ± %.5f (truth %g)\n", p.name.c_str(), p.value, p.sigma, TRUTH[i]);
+    EXPECT_TRUE(p.identifiable) << p.name;
+    // Within three of its standard deviations of the truth, which it knows to better than 5 %.
+    EXPECT_NEAR(p.value, TRUTH[i], 3.0 * p.sigma) << p.name;
+    EXPECT_LT(p.sigma, 0.05 * TRUTH[i]) << p.name;
+    ASSERT_TRUE(bsp::applyOverride(c, p.name, p.value));
+  }
+  // The camera's noise alone: the tracks' RMS distance to the fitted paths is about √2 σ.
+  for (double rms : fitted->shot_rms)
+    EXPECT_NEAR(rms, std::sqrt(2.0) * CAMERA_SIGMA, 0.5 * CAMERA_SIGMA);
+  // Shots the fit never saw rest where the truth puts them, within 1 cm at the median.
+  std::vector<double> misses;
+  for (const bsp::CuePlacement& cue :
+       {stroke(-0.9, 0.4, 20.0, 2.0, 0.3), stroke(0.9, -0.4, 170.0, 2.6, -0.3), stroke(0.0, 0.0, 45.0, 3.0, 0.0),
+        stroke(-0.5, -0.5, 95.0, 1.2, 0.5), stroke(0.3, 0.5, -120.0, 2.8, -0.5)})
+  {
+    const auto expected = bsp::predictShot(cue, truth()), predicted = bsp::predictShot(cue, c);
+    ASSERT_TRUE(expected.ok() && predicted.ok());
+    misses.push_back((expected->trajectory.finalState().position - predicted->trajectory.finalState().position).norm());
+  }
+  std::nth_element(misses.begin(), misses.begin() + 2, misses.end());
+  std::printf("held-out rest positions: median miss %.2f mm; %d iterations, %s\n", 1e3 * misses[2], fit.iterations,
+              fit.message.c_str());
+  EXPECT_LT(misses[2], 0.01);
+}
+
+TEST(TrackFit, AShotThatMeetsNoCushionSaysNothingOfIt)
+{
+  // A slow stun shot along the table's length, at rest before the far cushion.
+  std::mt19937 rng(2);
+  const std::vector<bsp::ObservedShot> shots = {observed(stroke(-0.9, 0.0, 0.0, 1.0, 0.0), truth(), rng)};
+  const auto fitted = bsp::fitTracks(bsp::ShotConfiguration{}, MOTION_CONSTANTS, shots, CAMERA_SIGMA);
+  ASSERT_TRUE(fitted.ok()) << fitted.error().describe();
+  const std::vector<bsp::FittedParameter>& p = fitted->fit.parameters;
+  EXPECT_TRUE(p[1].identifiable);
+  EXPECT_FALSE(p[2].identifiable);
+  EXPECT_EQ(p[2].value, 0.85);
+  EXPECT_TRUE(std::isinf(p[2].sigma));
+  EXPECT_NEAR(p[1].value, 0.015, 3.0 * p[1].sigma);
+}
+
+TEST(TrackFit, BadTracksAreRefusedNamingTheObservation)
+{
+  std::mt19937 rng(3);
+  const bsp::ObservedShot good = observed(stroke(-0.6, 0.0, 0.0, 2.0, 0.0), truth(), rng);
+  const auto field = [](const std::vector<bsp::ObservedShot>& shots, double sigma = CAMERA_SIGMA)
+  {
+    const auto fit = bsp::fitTracks(bsp::ShotConfiguration{}, MOTION_CONSTANTS, shots, sigma);
+    return fit.ok() ? std::string("accepted") : fit.error().field;
+  };
+  bsp::ObservedShot bad = good;
+  bad.tracks["cue"][5].t = NAN;
+  EXPECT_EQ(field({good, bad}), "shots[1].tracks.cue[5].t");
+  bad = good;
+  bad.tracks["cue"][0].t = -0.1;
+  EXPECT_EQ(field({bad}), "shots[0].tracks.cue[0].t");
+  bad = good;
+  std::swap(bad.tracks["cue"][3], bad.tracks["cue"][4]);
+  EXPECT_EQ(field({bad}), "shots[0].tracks.cue[4].t");
+  bad = good;
+  bad.tracks["cue"][2].position.y() = INFINITY;
+  EXPECT_EQ(field({bad}), "shots[0].tracks.cue[2].position");
+  bad = good;
+  bad.tracks["seven"] = {{0.0, {0.1, 0.1}}};
+  EXPECT_EQ(field({bad}), "shots[0].tracks.seven");
+  bad = good;
+  bad.tracks["cue"].resize(1);
+  EXPECT_EQ(field({bad}), "shots");  // 2 observations, 3 parameters
+  bad = good;
+  bad.cue.tip.z() += 0.2;  // the cue's axis passes over the ball
+  EXPECT_EQ(field({bad}).rfind("shots[0]", 0), 0u);
+  EXPECT_EQ(field({good}, 0.0), "position_sigma");
+  EXPECT_EQ(field({}), "shots");
+}
