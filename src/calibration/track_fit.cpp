@@ -27,18 +27,22 @@ Status validate(const std::vector<TrackPoint>& track, const std::string& field)
 Expected<std::vector<std::size_t>> trackedBalls(const ObservedShot& shot, const std::string& field)
 {
   std::vector<std::size_t> indices;
-  for (const auto& [id, track] : shot.tracks)
+  for (const auto& entry : shot.tracks)
   {
+    const std::string& id = entry.first;
+    std::string track_field = field;
+    track_field += ".tracks.";
+    track_field += id;
     std::size_t index = 0;
     if (id != CUE_BALL_ID)
     {
       const auto found =
           std::find_if(shot.others.begin(), shot.others.end(), [&](const TableBall& ball) { return ball.id == id; });
       if (found == shot.others.end())
-        return invalidArgument(field + ".tracks." + id, "no ball of the shot has this id");
+        return invalidArgument(track_field, "no ball of the shot has this id");
       index = 1 + static_cast<std::size_t>(found - shot.others.begin());
     }
-    if (Status status = validate(track, field + ".tracks." + id); !status)
+    if (Status status = validate(entry.second, track_field); !status)
       return status.error();
     indices.push_back(index);
   }
