@@ -4,6 +4,7 @@
 
 #include <Eigen/SVD>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <set>
@@ -63,6 +64,12 @@ struct Model
   const std::vector<ResidualBlock>& blocks;
   int residual_count;
   const FitOptions& options;
+  std::chrono::steady_clock::time_point deadline;
+
+  double secondsLeft() const
+  {
+    return std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+  }
 };
 
 /// Each block as a residual block of its own on the one parameter block `values` (so that Ceres may evaluate them
@@ -100,10 +107,12 @@ Status validate(const std::vector<FitParameter>& parameters, int residual_count,
                                                  ") than parameters (" + std::to_string(parameters.size()) + ")");
   if (!(options.identifiable_relative_sigma > 0.0) || !(options.robust_loss_sigmas >= 0.0) ||
       options.max_iterations < 1 || !(options.relative_step > 0.0 && options.relative_step <= 0.1) ||
-      options.starts < 1 || options.starts > MAX_STARTS || options.threads < 1 || options.threads > MAX_THREADS)
+      options.starts < 1 || options.starts > MAX_STARTS || options.threads < 1 || options.threads > MAX_THREADS ||
+      !(options.max_seconds > 0.0 && options.max_seconds <= 3600.0))
     return invalidArgument("options",
                            "identifiable_relative_sigma > 0, robust_loss_sigmas ≥ 0, max_iterations ≥ 1, "
-                           "relative_step in (0, 0.1], starts in [1, 10000] and threads in [1, 64] are required");
+                           "relative_step in (0, 0.1], starts in [1, 10000], threads in [1, 64] and "
+                           "max_seconds in (0, 3600] are required");
   return {};
 }
 
@@ -154,6 +163,7 @@ ceres::Solver::Summary fitFree(const Model& model, const std::vector<FitParamete
   solver.linear_solver_type = ceres::DENSE_QR;
   solver.max_num_iterations = options.max_iterations;
   solver.num_threads = options.threads;
+  solver.max_solver_time_in_seconds = std::max(model.secondsLeft(), 1e-3);
   solver.logging_type = ceres::SILENT;
   solver.minimizer_progress_to_stdout = false;
   // The residuals come from integrations at a relative tolerance near 1e-8: a tighter stop would chase their noise.
@@ -196,7 +206,7 @@ bool fitFrom(const Model& model, const std::vector<FitParameter>& parameters, st
   for (int i = 0; i < n; ++i)
     if (fit.jacobian.col(i).squaredNorm() > 0.0)
       fit.free.push_back(i);
-  for (int round = 0; round < 3 && !fit.free.empty(); ++round)
+  for (int round = 0; round < 3 && !fit.free.empty() && (round == 0 || model.secondsLeft() > 0.0); ++round)
   {
     fit.summary = fitFree(model, parameters, complement(fit.free, n), values);
     if (!evaluate(model, values, fit.residuals, &fit.jacobian))
@@ -220,8 +230,12 @@ std::vector<std::vector<double>> rankedStarts(const Model& model, const std::vec
   std::vector<std::pair<double, std::vector<double>>> ranked;
   Eigen::VectorXd r;
   for (const std::vector<double>& point : detail::startingPoints(parameters, model.options.starts))
+  {
+    if (!ranked.empty() && model.secondsLeft() <= 0.0)
+      break;
     if (evaluate(model, point, r))
       ranked.emplace_back(r.squaredNorm(), point);
+  }
   std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<std::vector<double>> points;
   points.reserve(ranked.size());
@@ -279,7 +293,9 @@ Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
   }
   if (Status status = validate(parameters, residual_count, options); !status)
     return status.error();
-  const Model model{blocks, residual_count, options};
+  const Model model{blocks, residual_count, options,
+                    std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                           std::chrono::duration<double>(options.max_seconds))};
   std::vector<double> start(parameters.size());
   std::transform(parameters.begin(), parameters.end(), start.begin(), [](const FitParameter& p) { return p.start; });
   Eigen::VectorXd r;
@@ -292,7 +308,9 @@ Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
   // A fit whose χ² = Σr² is within three standard deviations of its expectation (the residual count) explains the
   // data to their noise: no other start can do meaningfully better.
   const double explained = residual_count + 3.0 * std::sqrt(2.0 * residual_count);
-  for (std::size_t k = 0; k < std::min(points.size(), LOCAL_FITS) && !(found && 2.0 * best.cost() <= explained); ++k)
+  for (std::size_t k = 0; k < std::min(points.size(), LOCAL_FITS) && !(found && 2.0 * best.cost() <= explained) &&
+                          !(found && model.secondsLeft() <= 0.0);
+       ++k)
     if (fitFrom(model, parameters, points[k], candidate) && (!found || candidate.cost() < best.cost()))
     {
       best = candidate;
@@ -302,6 +320,11 @@ Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
     return Error{ErrorCode::NumericalFailure, "parameters", "the model cannot be evaluated along the fit"};
   FitResult result = report(parameters, best);
   result.initial_cost = 0.5 * r.squaredNorm();
+  if (model.secondsLeft() <= 0.0)
+  {
+    result.converged = false;
+    result.message = "the wall-clock budget ran out; the best point so far. " + result.message;
+  }
   return result;
 }
 

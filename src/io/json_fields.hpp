@@ -61,6 +61,7 @@ Expected<json> solveBallMotion(const json& request, const SolverOptions& options
 Expected<json> solveShot(const json& request, const SolverOptions& options);
 Expected<json> solveTableShot(const json& request, const SolverOptions& options);
 Expected<json> solvePlanShot(const json& request, const SolverOptions& options);
+Expected<json> solveCalibrate(const json& request, const SolverOptions& options);
 
 /// The cue strike fields of a request (json_strike.cpp), the strike solved, and its result as JSON.
 Expected<CueStrike> cueStrikeFromJson(const json& request);

@@ -4,6 +4,7 @@
 
 #include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/planning/shot_planner.hpp"
+#include "json_configuration.hpp"
 #include "json_fields.hpp"
 #include "json_table.hpp"
 
@@ -145,30 +146,6 @@ Expected<PlanRequest> planRequest(const json& request, double radius)
       !status)
     return status.error();
   return plan;
-}
-
-Expected<ShotConfiguration> configurationOf(const json& request, const SolverOptions& options)
-{
-  auto setup = withMotion(strikePhysicsFromJson(request), request, options);
-  if (!setup)
-    return setup.error();
-  auto contact = ballContactFromJson(request);
-  if (!contact)
-    return contact.error();
-  const CueStrike& s = setup.value().strike;
-  const MotionSetup& motion = setup.value().motion;
-  ShotConfiguration c;
-  c.cue_mass = s.cue_mass;
-  c.cue_end_mass = s.cue_end_mass;
-  c.ball_mass = s.ball_mass;
-  c.ball_radius = s.ball_radius;
-  c.cue_contact = s.cue_contact;
-  c.stiffness_ratio = s.stiffness_ratio;
-  c.table = motion.table;
-  c.ball_contact = contact.value();
-  c.motion = motion.parameters;
-  c.solver = options;
-  return c;
 }
 
 /// The planner names its fields in SI units; the request names some in degrees and milliseconds.

@@ -23,6 +23,7 @@ const std::pair<const char*, Solver> PROBLEMS[] = {
     {"shot", json_io::solveShot},
     {"table_shot", json_io::solveTableShot},
     {"plan_shot", json_io::solvePlanShot},
+    {"calibrate", json_io::solveCalibrate},
 };
 
 /// `path` extended by one step: a key of an object, or an index of an array.

@@ -6,6 +6,7 @@
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 
 namespace bsp = billiard_shot_planner;
+#include <yaml-cpp/yaml.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -608,4 +609,105 @@ TEST(ImpactSolve, PlanShotBadInputNamesTheField)
   auto seed = planRequest();
   seed["seed"] = -1;
   expectField(seed, "seed");
+}
+
+namespace
+{
+/// A table_shot of the white ball alone, tracked at 30 Hz from its samples for up to 3 s: [[t, x, y], …].
+nlohmann::json trackedShot(const nlohmann::json& cue, const std::vector<double>& position, double sliding_friction)
+{
+  auto shot = nlohmann::json::parse(stroke(cue.dump()));
+  shot["problem"] = "table_shot";
+  shot["balls"] = {{{"id", "white"}, {"position", position}}};
+  shot["cue_ball"] = "white";
+  shot["sliding_friction"] = sliding_friction;
+  shot["rolling_friction"] = 0.015;
+  shot["samples"] = true;
+  shot["sample_spacing"] = 1.0 / 30.0;
+  const SolverRun run = runSolver(shot.dump());
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  const auto out = nlohmann::json::parse(run.output);
+  nlohmann::json track = nlohmann::json::array();
+  for (const auto& sample : out["balls"][0]["samples"])
+    if (sample["t"].get<double>() <= 3.0)
+      track.push_back({sample["t"], sample["position"][0], sample["position"][1]});
+  return {{"balls", shot["balls"]}, {"cue_ball", "white"}, {"cue", cue}, {"tracks", {{"white", track}}}};
+}
+
+nlohmann::json calibrateRequest()
+{
+  auto request = nlohmann::json::parse(stroke("{}"));
+  request.erase("cue");
+  request["problem"] = "calibrate";
+  request["shots"] = {trackedShot({{"phi_deg", 10}, {"theta_deg", 5}, {"speed", 2.0}, {"b", 0.3}}, {-0.6, 0.0}, 0.2),
+                      trackedShot({{"phi_deg", 100}, {"theta_deg", 5}, {"speed", 1.8}, {"b", -0.3}}, {0.3, -0.3}, 0.2)};
+  request["fit"] = {"motion/sliding_friction", "motion/rolling_friction"};
+  return request;
+}
+}  // namespace
+
+// Tracks sampled by table_shot under μ_s = 0.2, μ_r = 0.015 (not the defaults): calibrate recovers both from the
+// defaults, and its overlay is a parameter file that says so.
+TEST(ImpactSolve, CalibrateRecoversTheFrictionThatDrewTableShotTracks)
+{
+  const SolverRun run = runSolver(calibrateRequest().dump());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto out = nlohmann::json::parse(run.output);
+  EXPECT_TRUE(out["converged"].get<bool>()) << out["message"];
+  const auto& sliding = out["parameters"]["motion/sliding_friction"];
+  const auto& rolling = out["parameters"]["motion/rolling_friction"];
+  EXPECT_TRUE(sliding["identifiable"].get<bool>());
+  EXPECT_NEAR(sliding["value"].get<double>(), 0.2, 1e-6);
+  EXPECT_NEAR(rolling["value"].get<double>(), 0.015, 1e-6);
+  EXPECT_GT(sliding["sigma"].get<double>(), 0.0);
+  ASSERT_EQ(out["residuals"].size(), 2u);
+  for (const auto& rms : out["residuals"])
+    EXPECT_LT(rms.get<double>(), 1e-6);  // noise-free tracks: the fitted paths go through them
+  EXPECT_EQ(out["correlation"].size(), 2u);
+  const YAML::Node overlay = YAML::Load(out["overlay_yaml"].get<std::string>());
+  // Ten significant digits.
+  EXPECT_NEAR(overlay["motion"]["sliding_friction"].as<double>(), sliding["value"].get<double>(), 1e-10);
+}
+
+TEST(ImpactSolve, CalibrateBadInputNamesTheObservation)
+{
+  auto expectField = [](nlohmann::json request, const std::string& field)
+  {
+    const SolverRun run = runSolver(request.dump());
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_NE(run.output.find(field), std::string::npos) << field << ": " << run.output;
+  };
+  const nlohmann::json good = calibrateRequest();
+  auto bad = good;
+  bad["shots"][1]["tracks"]["white"][4][0] = -1.0;
+  expectField(bad, "shots[1].tracks.white[4].t");
+  bad = good;
+  std::swap(bad["shots"][0]["tracks"]["white"][2], bad["shots"][0]["tracks"]["white"][3]);
+  expectField(bad, "shots[0].tracks.white[3].t");
+  bad = good;
+  bad["shots"][0]["tracks"]["white"][2] = {0.1, "x", 0.2};
+  expectField(bad, "shots[0].tracks.white[2]");
+  bad = good;
+  bad["shots"][0]["tracks"]["seven"] = {{0.0, 0.1, 0.1}};
+  expectField(bad, "shots[0].tracks.seven");
+  bad = good;
+  bad["shots"][0].erase("cue");
+  expectField(bad, "shots[0].cue");
+  bad = good;
+  bad["fit"] = {"motion/colour"};
+  expectField(bad, "fit[0]");
+  bad = good;
+  bad["fit"] = {{{"name", "motion/sliding_friction"}, {"lower", 0.5}, {"upper", 0.1}}};
+  expectField(bad, "motion/sliding_friction");
+  bad = good;
+  bad["position_noise"] = 0.0;
+  expectField(bad, "position_noise");
+  bad = good;
+  bad["shots"] = {good["shots"][0]};
+  bad["shots"][0]["tracks"]["white"] = {{0.0, -0.6, 0.0}};
+  bad["fit"] = {"motion/sliding_friction", "motion/rolling_friction", "table/cushion/restitution"};
+  expectField(bad, "shots");
+  bad = good;
+  bad["budget_ms"] = -1;
+  expectField(bad, "budget_ms");
 }

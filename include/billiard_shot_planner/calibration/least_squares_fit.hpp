@@ -35,6 +35,9 @@ struct FitOptions
   int max_iterations = 50;  ///< of each local fit
   /// Threads that evaluate the residual blocks side by side (fitLeastSquares with blocks), at most 64.
   int threads = 1;
+  /// Wall-clock budget of the whole fit, s, in (0, 3600]: past it no new start is tried and the local fit stops, and
+  /// the best point so far is the answer (converged false).
+  double max_seconds = 60.0;
   /// Central differences with this step relative to max(|value|, scale): the residuals come from an integration
   /// with its own tolerance, so the step stays well above it.
   double relative_step = 1e-4;

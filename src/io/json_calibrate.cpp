@@ -1,0 +1,339 @@
+// The calibrate problem: the model's constants fitted to the tracks of executed shots.
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+#include <tuple>
+
+#include "billiard_shot_planner/calibration/track_fit.hpp"
+#include "billiard_shot_planner/core/validation.hpp"
+#include "billiard_shot_planner/planning/stroke.hpp"
+#include "json_configuration.hpp"
+#include "json_fields.hpp"
+#include "json_table.hpp"
+
+namespace billiard_shot_planner
+{
+namespace json_io
+{
+namespace
+{
+constexpr double DEG = M_PI / 180.0;
+constexpr double INF = std::numeric_limits<double>::infinity();
+/// Bounds on a request's work: shots and track points (a fit's time is bounded by its budget_ms).
+constexpr std::size_t MAX_CALIBRATION_SHOTS = 200;
+constexpr std::size_t MAX_TRACK_POINTS = 200000;
+
+std::string dotted(std::string name)
+{
+  std::replace(name.begin(), name.end(), '/', '.');
+  return name;
+}
+
+std::string slashed(std::string name)
+{
+  std::replace(name.begin(), name.end(), '.', '/');
+  return name;
+}
+
+/// Bounds physics puts on a parameter by the kind its name says; a positive constant of no known kind may range
+/// over two decades either side of its start.
+std::pair<double, double> defaultBounds(const std::string& name, double start)
+{
+  const auto endsWith = [&](const std::string& suffix)
+  { return name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0; };
+  if (endsWith("restitution"))
+    return {0.0, 1.0};
+  if (endsWith("friction"))
+    return {0.0, 2.0};
+  if (endsWith("eta2"))
+    return {0.05, 100.0};
+  if (endsWith("stiffness_ratio"))
+    return {1e-3, 1e3};
+  if (start > 0.0)
+    return {start / 100.0, start * 100.0};
+  return {-INF, INF};
+}
+
+/// The current value of a configuration's parameter by its dotted name.
+Expected<double> currentValue(ShotConfiguration configuration, const std::string& name, const std::string& field)
+{
+  for (const NamedParameter& parameter : numericParameters(configuration))
+    if (name == parameter.name)
+      return *parameter.value;
+  return invalidArgument(field, "\"" + slashed(name) + "\" is not a physical parameter that can be fitted");
+}
+
+/// "fit": the names (the node's, with '/') or {"name", "start", "lower", "upper"}; the start defaults to the
+/// request's value, the bounds to defaultBounds().
+Expected<std::vector<FitParameter>> fitParameters(const json& request, const ShotConfiguration& configuration)
+{
+  if (!request.contains("fit") || !request.at("fit").is_array() || request.at("fit").empty())
+    return invalidArgument("fit",
+                           "is required: the names of the parameters to fit, e.g. [\"motion/sliding_friction\"]");
+  std::vector<FitParameter> parameters;
+  const json& list = request.at("fit");
+  for (std::size_t i = 0; i < list.size(); ++i)
+  {
+    const std::string field = "fit[" + std::to_string(i) + "]";
+    const json& entry = list[i];
+    const json* name = entry.is_string()                             ? &entry
+                       : entry.is_object() && entry.contains("name") ? &entry["name"]
+                                                                     : nullptr;
+    if (!name || !name->is_string())
+      return invalidArgument(field, "must be a parameter's name or {\"name\", \"start\", \"lower\", \"upper\"}");
+    FitParameter parameter;
+    parameter.name = dotted(name->get<std::string>());
+    auto start = currentValue(configuration, parameter.name, field);
+    if (!start)
+      return start.error();
+    parameter.start = start.value();
+    std::tie(parameter.lower, parameter.upper) = defaultBounds(parameter.name, parameter.start);
+    if (entry.is_object())
+      if (Status status = readNumbers(
+              entry, {{"start", &parameter.start}, {"lower", &parameter.lower}, {"upper", &parameter.upper}}, field);
+          !status)
+        return status.error();
+    parameters.push_back(parameter);
+  }
+  return parameters;
+}
+
+/// "tracks": {id: [[t, x, y], …]}, the cue ball's track filed under CUE_BALL_ID.
+Expected<std::map<std::string, std::vector<TrackPoint>>> tracks(const json& shot, const std::string& prefix,
+                                                                const std::string& cue_ball)
+{
+  if (!shot.contains("tracks") || !shot.at("tracks").is_object())
+    return invalidArgument(prefix + ".tracks", "is required: {ball id: [[t, x, y], …]}");
+  std::map<std::string, std::vector<TrackPoint>> read;
+  for (const auto& [id, points] : shot.at("tracks").items())
+  {
+    const std::string field = prefix + ".tracks." + id;
+    if (!points.is_array())
+      return invalidArgument(field, "must be an array of [t, x, y]");
+    std::vector<TrackPoint>& track = read[id == cue_ball ? std::string(CUE_BALL_ID) : id];
+    for (std::size_t j = 0; j < points.size(); ++j)
+    {
+      const json& p = points[j];
+      if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
+        return invalidArgument(field + "[" + std::to_string(j) + "]", "must be [t, x, y] in s and m");
+      track.push_back({p[0].get<double>(), {p[1].get<double>(), p[2].get<double>()}});
+    }
+  }
+  return read;
+}
+
+/// The cue as a stroke, "cue": {"phi_deg", "theta_deg", "speed", "a", "b"}, placed at the cue ball.
+Expected<CuePlacement> strokeCue(const json& shot, const std::string& prefix, const Eigen::Vector2d& ball,
+                                 double radius)
+{
+  auto fields = object(shot, "cue", true);
+  if (!fields)
+    return nested(prefix, fields.error());
+  Stroke stroke;
+  double phi_deg = 0.0, theta_deg = 0.0;
+  if (Status status =
+          firstError({readNumbers(fields.value(), {{"phi_deg", &phi_deg}, {"speed", &stroke.speed}}, prefix + ".cue",
+                                  Presence::Required),
+                      readNumbers(fields.value(), {{"theta_deg", &theta_deg}, {"a", &stroke.a}, {"b", &stroke.b}},
+                                  prefix + ".cue")});
+      !status)
+    return status.error();
+  stroke.phi = phi_deg * DEG;
+  stroke.theta = theta_deg * DEG;
+  auto cue = placeStroke(stroke, ball, radius);
+  if (!cue)
+    return nested(prefix + ".cue", cue.error());
+  return cue;
+}
+
+Expected<ObservedShot> observedShot(const json& shot, std::size_t k, double radius, std::string& cue_ball)
+{
+  const std::string prefix = "shots[" + std::to_string(k) + "]";
+  if (!shot.is_object())
+    return invalidArgument(prefix, "must be an object {\"balls\", \"cue\", \"tracks\"}");
+  auto balls = tableBalls(shot, radius);
+  if (!balls)
+    return nested(prefix, balls.error());
+  auto cue_index = cueBallIndex(shot, balls.value());
+  if (!cue_index)
+    return nested(prefix, cue_index.error());
+  cue_ball = balls.value()[cue_index.value()].id;
+  ObservedShot observed;
+  auto cue = strokeCue(shot, prefix, balls.value()[cue_index.value()].state.position.head<2>(), radius);
+  if (!cue)
+    return cue.error();
+  observed.cue = cue.value();
+  for (std::size_t i = 0; i < balls.value().size(); ++i)
+    if (i != cue_index.value())
+      observed.others.push_back(balls.value()[i]);
+  auto read = tracks(shot, prefix, cue_ball);
+  if (!read)
+    return read.error();
+  observed.tracks = read.value();
+  return observed;
+}
+
+/// A fit's error in the request's names: the cue ball's track under its own id, parameters with '/'.
+Error inRequestTerms(Error error, const std::vector<std::string>& cue_balls)
+{
+  const std::string cue_track = std::string(".tracks.") + CUE_BALL_ID;
+  const std::size_t at = error.field.find(cue_track);
+  if (at != std::string::npos && error.field.rfind("shots[", 0) == 0)
+  {
+    const std::size_t k = std::stoul(error.field.substr(6));
+    if (k < cue_balls.size())
+      error.field.replace(at + 8, std::string(CUE_BALL_ID).size(), cue_balls[k]);
+  }
+  else if (error.field == "position_sigma")
+    error.field = "position_noise";
+  else if (error.field.find('.') != std::string::npos && error.field.rfind("shots", 0) != 0)
+    error.field = slashed(error.field);
+  return error;
+}
+
+/// Parameters by the steps of their names ("table" → "cushion" → "restitution"): the nesting of a parameter file.
+struct ParameterTree
+{
+  std::map<std::string, ParameterTree> children;
+  double value = 0.0;
+};
+
+void emit(YAML::Emitter& out, const ParameterTree& tree)
+{
+  out << YAML::BeginMap;
+  for (const auto& [key, child] : tree.children)
+  {
+    out << YAML::Key << key << YAML::Value;
+    if (child.children.empty())
+      out << child.value;
+    else
+      emit(out, child);
+  }
+  out << YAML::EndMap;
+}
+
+/// The identifiable parameters as a parameter file for the node (nested maps under the names' steps), to load
+/// after the defaults as launch/predict_shot.launch loads config/paper_masse.yaml.
+std::string overlayYaml(const FitResult& fit)
+{
+  ParameterTree root;
+  for (const FittedParameter& p : fit.parameters)
+  {
+    if (!p.identifiable)
+      continue;
+    ParameterTree* node = &root;
+    for (std::size_t begin = 0, end = 0; begin <= p.name.size(); begin = end + 1)
+    {
+      end = std::min(p.name.find('.', begin), p.name.size());
+      node = &node->children[p.name.substr(begin, end - begin)];
+    }
+    node->value = p.value;
+  }
+  YAML::Emitter out;
+  out.SetDoublePrecision(10);
+  out << YAML::Comment("fitted by impact_solve calibrate (identifiable parameters only)");
+  if (!root.children.empty())
+    emit(out, root);
+  return std::string(out.c_str()) + "\n";
+}
+
+json answerJson(const TrackFit& fitted)
+{
+  const FitResult& fit = fitted.fit;
+  json parameters = json::object(), correlation = json::array();
+  for (std::size_t i = 0; i < fit.parameters.size(); ++i)
+  {
+    const FittedParameter& p = fit.parameters[i];
+    parameters[slashed(p.name)] = {{"value", p.value},
+                                   {"sigma", std::isfinite(p.sigma) ? json(p.sigma) : json(nullptr)},
+                                   {"identifiable", p.identifiable},
+                                   {"at_bound", p.at_bound}};
+    json row = json::array();
+    for (std::size_t j = 0; j < fit.parameters.size(); ++j)
+    {
+      const double c = fit.correlation(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+      row.push_back(std::isfinite(c) ? json(c) : json(nullptr));
+    }
+    correlation.push_back(row);
+  }
+  return json{{"parameters", parameters},
+              {"correlation", correlation},
+              {"residuals", fitted.shot_rms},
+              {"chi2", 2.0 * fit.final_cost},
+              {"observations", fit.residuals.size()},
+              {"converged", fit.converged},
+              {"iterations", fit.iterations},
+              {"message", fit.message},
+              {"overlay_yaml", overlayYaml(fit)}};
+}
+
+Status readFitOptions(const json& request, double& position_noise, FitOptions& options)
+{
+  double starts = options.starts, threads = options.threads, budget_ms = options.max_seconds * 1e3;
+  if (Status status = readNumbers(request, {{"position_noise", &position_noise},
+                                            {"starts", &starts},
+                                            {"threads", &threads},
+                                            {"budget_ms", &budget_ms},
+                                            {"robust_loss_sigmas", &options.robust_loss_sigmas}});
+      !status)
+    return status;
+  if (!(budget_ms > 0.0 && budget_ms <= 3.6e6))
+    return invalidArgument("budget_ms", "must be in (0, 3 600 000]");
+  if (!(options.robust_loss_sigmas >= 0.0 && std::isfinite(options.robust_loss_sigmas)))
+    return invalidArgument("robust_loss_sigmas", "must be finite and ≥ 0 (0: plain least squares)");
+  options.max_seconds = budget_ms * 1e-3;
+  if (!(starts >= 1 && starts <= 10000 && starts == std::floor(starts)))
+    return invalidArgument("starts", "must be an integer in [1, 10000]");
+  if (!(threads >= 1 && threads <= 64 && threads == std::floor(threads)))
+    return invalidArgument("threads", "must be an integer in [1, 64]");
+  options.starts = static_cast<int>(starts);
+  options.threads = static_cast<int>(threads);
+  return {};
+}
+}  // namespace
+
+Expected<json> solveCalibrate(const json& request, const SolverOptions& options)
+{
+  auto configuration = configurationOf(request, options);
+  if (!configuration)
+    return configuration.error();
+  auto parameters = fitParameters(request, configuration.value());
+  if (!parameters)
+    return parameters.error();
+  double position_noise = 0.002;
+  FitOptions fit_options;
+  fit_options.max_seconds = 60.0;
+  if (Status status = readFitOptions(request, position_noise, fit_options); !status)
+    return status.error();
+  if (!request.contains("shots") || !request.at("shots").is_array())
+    return invalidArgument("shots", "is required: an array of {\"balls\", \"cue\", \"tracks\"}");
+  std::vector<ObservedShot> shots;
+  std::vector<std::string> cue_balls;
+  std::size_t points = 0;
+  for (std::size_t k = 0; k < request.at("shots").size() && k <= MAX_CALIBRATION_SHOTS; ++k)
+  {
+    std::string cue_ball;
+    auto shot = observedShot(request.at("shots")[k], k, configuration.value().ball_radius, cue_ball);
+    if (!shot)
+      return shot.error();
+    for (const auto& entry : shot.value().tracks)
+      points += entry.second.size();
+    if (points > MAX_TRACK_POINTS)
+      return invalidArgument("shots", "at most " + std::to_string(MAX_TRACK_POINTS) + " track points in all");
+    shots.push_back(shot.value());
+    cue_balls.push_back(cue_ball);
+  }
+  if (shots.size() > MAX_CALIBRATION_SHOTS)
+    return invalidArgument("shots", "at most " + std::to_string(MAX_CALIBRATION_SHOTS) + " shots");
+  auto fitted = fitTracks(configuration.value(), parameters.value(), shots, position_noise, fit_options);
+  if (!fitted)
+    return inRequestTerms(fitted.error(), cue_balls);
+  return answerJson(fitted.value());
+}
+
+}  // namespace json_io
+}  // namespace billiard_shot_planner
