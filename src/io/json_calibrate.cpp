@@ -43,15 +43,15 @@ std::string slashed(std::string name)
 /// over two decades either side of its start.
 std::pair<double, double> defaultBounds(const std::string& name, double start)
 {
-  const auto endsWith = [&](const std::string& suffix)
+  const auto ends_with = [&](const std::string& suffix)
   { return name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0; };
-  if (endsWith("restitution"))
+  if (ends_with("restitution"))
     return {0.0, 1.0};
-  if (endsWith("friction"))
+  if (ends_with("friction"))
     return {0.0, 2.0};
-  if (endsWith("eta2"))
+  if (ends_with("eta2"))
     return {0.05, 100.0};
-  if (endsWith("stiffness_ratio"))
+  if (ends_with("stiffness_ratio"))
     return {1e-3, 1e3};
   if (start > 0.0)
     return {start / 100.0, start * 100.0};
@@ -111,7 +111,9 @@ Expected<std::map<std::string, std::vector<TrackPoint>>> tracks(const json& shot
   std::map<std::string, std::vector<TrackPoint>> read;
   for (const auto& [id, points] : shot.at("tracks").items())
   {
-    const std::string field = prefix + ".tracks." + id;
+    std::string field = prefix;
+    field += ".tracks.";
+    field += id;
     if (!points.is_array())
       return invalidArgument(field, "must be an array of [t, x, y]");
     std::vector<TrackPoint>& track = read[id == cue_ball ? std::string(CUE_BALL_ID) : id];
