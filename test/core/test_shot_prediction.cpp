@@ -111,3 +111,34 @@ TEST(ShotPrediction, StunStopsDrawComesBackFollowFollowsThrough)
         EXPECT_GT(b * shot.rolling_speed, 0.15 * v) << "b " << b << ", " << speed << " m/s";  // back or through
     }
 }
+
+// predictShot is strikeBall followed by predictShotAfter: the two parts give the whole prediction bit for bit, and a
+// strike solved once serves every motion constant (the paths after it change, the strike does not).
+TEST(ShotPrediction, TheStrikeSolvedOnceGivesTheWholePrediction)
+{
+  bsp::ShotConfiguration configuration;
+  const double R = configuration.ball_radius;
+  const auto stroke = bsp::strokeGeometry({0.4, 0.2, 0.3, -0.4});
+  ASSERT_TRUE(stroke.ok());
+  bsp::CuePlacement cue;
+  cue.ball = Eigen::Vector2d(-0.3, 0.1);
+  cue.direction = stroke.value().cue_direction;
+  cue.tip = Eigen::Vector3d(cue.ball.x(), cue.ball.y(), R) + R * stroke.value().hit_normal;
+  cue.speed = 2.5;
+  bsp::BallState object;
+  object.position = Eigen::Vector3d(0.4, 0.35, R);
+  const std::vector<bsp::TableBall> others = {{"one", object}};
+  const auto struck = bsp::strikeBall(cue, configuration);
+  ASSERT_TRUE(struck.ok());
+  for (double sliding : {0.152479, 0.25})
+  {
+    configuration.motion.sliding_friction = sliding;
+    const auto whole = bsp::predictShot(cue, configuration, others);
+    const auto after = bsp::predictShotAfter(cue, struck.value(), configuration, others);
+    ASSERT_TRUE(whole.ok() && after.ok());
+    ASSERT_EQ(whole->table.balls.size(), after->table.balls.size());
+    for (std::size_t b = 0; b < whole->table.balls.size(); ++b)
+      EXPECT_EQ(whole->table.balls[b].finalState().position, after->table.balls[b].finalState().position) << b;
+    EXPECT_EQ(whole->hit_point, after->hit_point);
+  }
+}
