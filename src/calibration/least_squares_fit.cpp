@@ -206,11 +206,14 @@ bool fitFrom(const Model& model, const std::vector<FitParameter>& parameters, st
   for (int i = 0; i < n; ++i)
     if (fit.jacobian.col(i).squaredNorm() > 0.0)
       fit.free.push_back(i);
-  for (int round = 0; round < 3 && !fit.free.empty() && (round == 0 || model.secondsLeft() > 0.0); ++round)
+  // Each round that does not end the loop drops at least one parameter, so there are at most n + 1.
+  bool evaluated_here = true;
+  for (int round = 0; !fit.free.empty() && (round == 0 || model.secondsLeft() > 0.0); ++round)
   {
     fit.summary = fitFree(model, parameters, complement(fit.free, n), values);
     if (!evaluate(model, values, fit.residuals, &fit.jacobian))
       return false;
+    evaluated_here = true;
     const std::vector<int> still = detail::identifiableParameters(
         fit.jacobian, detail::parameterScales(parameters, values), model.options.identifiable_relative_sigma, fit.free);
     if (still.size() == fit.free.size())
@@ -219,7 +222,11 @@ bool fitFrom(const Model& model, const std::vector<FitParameter>& parameters, st
       if (std::find(still.begin(), still.end(), i) == still.end())
         values[i] = parameters[i].start;
     fit.free = still;
+    evaluated_here = false;
   }
+  // The residuals and curvature reported are those of the values returned.
+  if (!evaluated_here && !evaluate(model, values, fit.residuals, &fit.jacobian))
+    return false;
   fit.values = values;
   return true;
 }
