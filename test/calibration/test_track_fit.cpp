@@ -59,6 +59,15 @@ const std::vector<bsp::FitParameter> MOTION_CONSTANTS = {{"motion.sliding_fricti
                                                          {"motion.rolling_friction", 0.0209727, 0.001, 0.2},
                                                          {"table.cushion.restitution", 0.85, 0.0, 1.0}};
 const double TRUTH[] = {0.2, 0.015, 0.75};
+
+/// The longest wall-clock budget allowed: the fits' 60 s default is a safety net in seconds, and the sanitized build
+/// runs them twenty times slower.
+bsp::FitOptions slowMachineBudget()
+{
+  bsp::FitOptions options;
+  options.max_seconds = 3600.0;
+  return options;
+}
 }  // namespace
 
 TEST(TrackFit, RecoversTheConstantsAndPredictsShotsItNeverSaw)
@@ -67,7 +76,8 @@ TEST(TrackFit, RecoversTheConstantsAndPredictsShotsItNeverSaw)
   std::vector<bsp::ObservedShot> shots;
   for (const bsp::CuePlacement& cue : shotsIntoCushions())
     shots.push_back(observed(cue, truth(), rng));
-  const auto fitted = bsp::fitTracks(bsp::ShotConfiguration{}, MOTION_CONSTANTS, shots, CAMERA_SIGMA);
+  const auto fitted =
+      bsp::fitTracks(bsp::ShotConfiguration{}, MOTION_CONSTANTS, shots, CAMERA_SIGMA, slowMachineBudget());
   ASSERT_TRUE(fitted.ok()) << fitted.error().describe();
   const bsp::FitResult& fit = fitted->fit;
   EXPECT_TRUE(fit.converged) << fit.message;
