@@ -231,18 +231,17 @@ bool fitFrom(const Model& model, const std::vector<FitParameter>& parameters, st
   return true;
 }
 
-/// The starting points in order of their cost, those where the model fails left out.
-std::vector<std::vector<double>> rankedStarts(const Model& model, const std::vector<FitParameter>& parameters)
+/// The starting points in order of their cost, those where the model fails left out; the first point, the
+/// parameters' own start, has `start_cost` (Σr², already evaluated).
+std::vector<std::vector<double>> rankedStarts(const Model& model, const std::vector<FitParameter>& parameters,
+                                              double start_cost)
 {
-  std::vector<std::pair<double, std::vector<double>>> ranked;
+  std::vector<std::vector<double>> candidates = detail::startingPoints(parameters, model.options.starts);
+  std::vector<std::pair<double, std::vector<double>>> ranked = {{start_cost, candidates.front()}};
   Eigen::VectorXd r;
-  for (const std::vector<double>& point : detail::startingPoints(parameters, model.options.starts))
-  {
-    if (!ranked.empty() && model.secondsLeft() <= 0.0)
-      break;
-    if (evaluate(model, point, r))
-      ranked.emplace_back(r.squaredNorm(), point);
-  }
+  for (std::size_t k = 1; k < candidates.size() && model.secondsLeft() > 0.0; ++k)
+    if (evaluate(model, candidates[k], r))
+      ranked.emplace_back(r.squaredNorm(), candidates[k]);
   std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<std::vector<double>> points;
   points.reserve(ranked.size());
@@ -311,7 +310,7 @@ Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
 
   LocalFit best, candidate;
   bool found = false;
-  const std::vector<std::vector<double>> points = rankedStarts(model, parameters);
+  const std::vector<std::vector<double>> points = rankedStarts(model, parameters, r.squaredNorm());
   // A fit whose χ² = Σr² is within three standard deviations of its expectation (the residual count) explains the
   // data to their noise: no other start can do meaningfully better.
   const double explained = residual_count + 3.0 * std::sqrt(2.0 * residual_count);
