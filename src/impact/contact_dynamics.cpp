@@ -42,6 +42,9 @@ void ContactDynamics::refresh()
       rigid_contacts_.push_back(i);
     any_quasi_steady_ = any_quasi_steady_ || contacts_[i].followsSlip();
   }
+  link_rows_.resize(static_cast<Eigen::Index>(rigid_contacts_.size()), space_.size);
+  for (Eigen::Index r = 0; r < link_rows_.rows(); ++r)
+    link_rows_.row(r) = space_.delassus.row(space_.offset[rigid_contacts_[r]]);
 }
 
 bool ContactDynamics::follows(std::size_t contact, std::size_t also_following) const
@@ -301,38 +304,49 @@ double ContactDynamics::relaxationRatio(std::size_t contact, const Eigen::Vector
   return contacts_[contact].coneLength(force(row)) / (quasi_steady_relaxation_ * speed);
 }
 
-Eigen::MatrixXd ContactDynamics::linkBasis(const SlipDirections& directions) const
+double ContactDynamics::linkCoupling(std::size_t link, std::size_t by, const SlipDirections& directions) const
 {
-  // Rigid links: unknown normal forces f keep their normal velocities constant (zero), (W F)_n = 0. A sliding
-  // link's friction, −μ f ŝ, depends on its own unknown, so each link contributes a column B_r of F = F_s + B f.
-  const auto links = static_cast<Eigen::Index>(rigid_contacts_.size());
-  Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(space_.size, links);
-  for (Eigen::Index r = 0; r < links; ++r)
-  {
-    const std::size_t i = rigid_contacts_[r];
-    const int row = space_.offset[i];
-    basis(row, r) = 1.0;
-    if (contacts_[i].slipping)
-      basis.block<2, 1>(row + 1, r) = -contacts_[i].friction * directions[i];
-  }
-  return basis;
+  // The column B_by of F = F_s + B f: 1 on the link's normal row and, while it slides, −μŝ on its tangent rows.
+  const std::size_t i = rigid_contacts_[by];
+  const int row = space_.offset[i];
+  const auto w = link_rows_.row(static_cast<Eigen::Index>(link));
+  double coupling = w(row);
+  if (contacts_[i].slipping)
+    coupling -= contacts_[i].friction * (w(row + 1) * directions[i].x() + w(row + 2) * directions[i].y());
+  return coupling;
 }
 
-Eigen::MatrixXd ContactDynamics::linkRows() const
+Eigen::VectorXd ContactDynamics::solveLinks(const SlipDirections& directions, const Eigen::VectorXd& rates) const
 {
-  Eigen::MatrixXd normal_rows(static_cast<Eigen::Index>(rigid_contacts_.size()), space_.size);
-  for (Eigen::Index r = 0; r < normal_rows.rows(); ++r)
-    normal_rows.row(r) = space_.delassus.row(space_.offset[rigid_contacts_[r]]);
-  return normal_rows;
+  // Rigid links: unknown normal forces f keep their normal velocities constant (zero), (W F)_L = 0, so
+  // (W_L B) f = −W_L F_s; a sliding link's friction −μfŝ depends on its own unknown, hence B.
+  const auto links = static_cast<Eigen::Index>(rigid_contacts_.size());
+  const Eigen::VectorXd right = -(link_rows_ * rates);
+  if (links == 1)
+  {
+    // The common case, a single link, without a decomposition (what it would give: the least-norm 0 if singular).
+    const double system = linkCoupling(0, 0, directions);
+    return Eigen::VectorXd::Constant(1, system == 0.0 ? 0.0 : right(0) / system);
+  }
+  Eigen::MatrixXd system(links, links);
+  for (Eigen::Index r = 0; r < links; ++r)
+    for (Eigen::Index c = 0; c < links; ++c)
+      system(r, c) = linkCoupling(static_cast<std::size_t>(r), static_cast<std::size_t>(c), directions);
+  // Redundant links (a singular system) get the least-norm forces.
+  return system.completeOrthogonalDecomposition().solve(right);
 }
 
 void ContactDynamics::addLinkForces(const SlipDirections& directions, Eigen::VectorXd& force) const
 {
-  const Eigen::MatrixXd basis = linkBasis(directions), normal_rows = linkRows();
-  // Redundant links (a singular system) get the least-norm forces.
-  const Eigen::VectorXd link_forces =
-      (normal_rows * basis).completeOrthogonalDecomposition().solve(-(normal_rows * force));
-  force += basis * link_forces;
+  const Eigen::VectorXd link_forces = solveLinks(directions, force);
+  for (Eigen::Index r = 0; r < link_forces.size(); ++r)
+  {
+    const std::size_t i = rigid_contacts_[r];
+    const int row = space_.offset[i];
+    force(row) += link_forces(r);
+    if (contacts_[i].slipping)
+      force.segment<2>(row + 1) -= contacts_[i].friction * link_forces(r) * directions[i];
+  }
 }
 
 Eigen::Vector2d ContactDynamics::directionRate(std::size_t contact, const Eigen::Vector2d& direction,
@@ -377,9 +391,7 @@ double ContactDynamics::linkForceRate(std::size_t contact, const ForceEvaluation
     else
       rate.segment<2>(row + 1) = -state.friction * force(row) * directionRate(i, directions[i], w, force);
   }
-  const Eigen::MatrixXd normal_rows = linkRows();
-  const Eigen::VectorXd rates =
-      (normal_rows * linkBasis(directions)).completeOrthogonalDecomposition().solve(-(normal_rows * rate));
+  const Eigen::VectorXd rates = solveLinks(directions, rate);
   for (Eigen::Index r = 0; r < rates.size(); ++r)
     if (rigid_contacts_[r] == contact)
       return rates(r);

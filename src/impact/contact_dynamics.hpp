@@ -142,9 +142,12 @@ private:
   /// Forces of the springs alone (rigid-link normals and sliding-link friction left at zero).
   void springForces(const double* y, const SlipDirections& directions, Eigen::VectorXd& force) const;
   void addLinkForces(const SlipDirections& directions, Eigen::VectorXd& force) const;
-  /// Columns B of the rigid links' forces (F = F_s + B f) and the rows W_L of their normal velocities.
-  Eigen::MatrixXd linkBasis(const SlipDirections& directions) const;
-  Eigen::MatrixXd linkRows() const;
+  /// The rigid links' forces f (F = F_s + B f, B their columns) that keep W_L F = 0 for the other forces `rates`
+  /// (F_s, or with its rate, ḟ from Ḟ_s).
+  Eigen::VectorXd solveLinks(const SlipDirections& directions, const Eigen::VectorXd& rates) const;
+  /// (W_L B) at (link, by): how link `by`'s force moves link `link`'s normal velocity (indices into
+  /// rigid_contacts_).
+  double linkCoupling(std::size_t link, std::size_t by, const SlipDirections& directions) const;
   /// Part of a contact's tangential velocity across its slip direction ŝ = `direction`, (I − ŝŝᵀ)v_t.
   Eigen::Vector2d acrossSlip(std::size_t contact, const Eigen::Vector2d& direction, const Eigen::VectorXd& w) const;
   /// Turning rate of a sliding contact's slip direction ŝ = `direction`.
@@ -154,6 +157,8 @@ private:
   const ContactSpace& space_;
   const std::vector<ContactState>& contacts_;
   std::vector<std::size_t> rigid_contacts_;
+  /// The rigid links' normal rows of W̃, W_L (one a link), set by refresh().
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> link_rows_;
   bool any_quasi_steady_ = false;
   double quasi_steady_relaxation_;
 };
