@@ -17,7 +17,7 @@ PACKAGES=(
   build-essential cmake
   catkin ros-core-dev python3-catkin-pkg rosbash
   libroscpp-dev libactionlib-dev libactionlib-msgs-dev python3-actionlib libtf2-ros-dev libtf2-geometry-msgs-dev libtf2-eigen-dev libvisualization-msgs-dev
-  libgeometry-msgs-dev librostest-dev python3-rostest python3-rospy python3-rosbag tf2-tools
+  libgeometry-msgs-dev libstd-srvs-dev python3-std-srvs librostest-dev python3-rostest python3-rospy python3-rosbag tf2-tools
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
   libeigen3-dev libboost-dev nlohmann-json3-dev libyaml-cpp-dev libnlopt-cxx-dev libceres-dev
   libgtest-dev libbenchmark-dev

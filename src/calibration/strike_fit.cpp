@@ -3,11 +3,17 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <string>
+#include <vector>
+
+#include "fitted_values.hpp"
 
 namespace billiard_shot_planner
 {
 namespace
 {
+/// The unknowns the strike fit applies itself, to the cue's direction.
+const std::vector<std::string> CUE_TURNS = {CUE_YAW, CUE_PITCH};
+
 Status validate(const ObservedStrike& strike, const std::string& field)
 {
   if (!strike.velocity.allFinite())
@@ -69,16 +75,14 @@ Expected<CuePlacement> turnedCue(const CuePlacement& cue, double yaw, double pit
 Status applyFitted(const std::vector<std::string>& names, const std::vector<double>& values,
                    ShotConfiguration& configuration, CuePlacement& cue)
 {
+  if (Status status = applyValues(configuration, names, values, CUE_TURNS); !status)
+    return status;
   double yaw = 0.0, pitch = 0.0;
   for (std::size_t i = 0; i < names.size(); ++i)
-  {
     if (names[i] == CUE_YAW)
       yaw = values[i];
     else if (names[i] == CUE_PITCH)
       pitch = values[i];
-    else if (Status status = applyOverride(configuration, names[i], values[i]); !status)
-      return status;
-  }
   if (yaw == 0.0 && pitch == 0.0)
     return {};
   auto turned = turnedCue(cue, yaw, pitch, configuration.ball_radius);
@@ -91,15 +95,10 @@ Status applyFitted(const std::vector<std::string>& names, const std::vector<doub
 Expected<FitResult> fitStrikes(const ShotConfiguration& configuration, const std::vector<FitParameter>& parameters,
                                const std::vector<ObservedStrike>& strikes, const FitOptions& options)
 {
-  std::vector<std::string> names;
-  for (const FitParameter& parameter : parameters)
-  {
-    names.push_back(parameter.name);
-    ShotConfiguration trial = configuration;
-    if (parameter.name != CUE_YAW && parameter.name != CUE_PITCH)
-      if (Status status = applyOverride(trial, parameter.name, parameter.start); !status)
-        return status.error();
-  }
+  auto checked = checkedNames(configuration, parameters, CUE_TURNS);
+  if (!checked)
+    return checked.error();
+  const std::vector<std::string> names = checked.value();
   if (strikes.empty())
     return invalidArgument("strikes", "no observed strike");
   if (4 * strikes.size() < parameters.size())

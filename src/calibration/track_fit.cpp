@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "fitted_values.hpp"
+
 namespace billiard_shot_planner
 {
 namespace
@@ -102,14 +104,10 @@ Expected<TrackFit> fitTracks(const ShotConfiguration& configuration, const std::
 {
   if (!(position_sigma > 0.0 && std::isfinite(position_sigma)))
     return invalidArgument("position_sigma", "must be finite and > 0");
-  std::vector<std::string> names;
-  for (const FitParameter& parameter : parameters)
-  {
-    names.push_back(parameter.name);
-    ShotConfiguration trial = configuration;
-    if (Status status = applyOverride(trial, parameter.name, parameter.start); !status)
-      return status.error();
-  }
+  auto checked = checkedNames(configuration, parameters);
+  if (!checked)
+    return checked.error();
+  const std::vector<std::string> names = checked.value();
   if (shots.empty())
     return invalidArgument("shots", "no observed shot");
   std::vector<std::vector<std::size_t>> balls;
@@ -150,9 +148,8 @@ Expected<TrackFit> fitTracks(const ShotConfiguration& configuration, const std::
     blocks.push_back({count, [&, k, count, struck](const std::vector<double>& values, Eigen::VectorXd& out)
                       {
                         ShotConfiguration changed = configuration;
-                        for (std::size_t i = 0; i < names.size(); ++i)
-                          if (!applyOverride(changed, names[i], values[i]))
-                            return false;
+                        if (!applyValues(changed, names, values))
+                          return false;
                         out.resize(count);
                         Eigen::Index row = 0;
                         return shotResiduals(shots[k], balls[k], struck, changed, position_sigma, out, row);

@@ -1,15 +1,13 @@
 // The calibrate problem: the model's constants fitted to the tracks of executed shots.
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <string>
-#include <tuple>
 
+#include "billiard_shot_planner/calibration/fit_parameter_bounds.hpp"
 #include "billiard_shot_planner/calibration/track_fit.hpp"
 #include "billiard_shot_planner/core/validation.hpp"
+#include "billiard_shot_planner/io/calibration_overlay.hpp"
 #include "billiard_shot_planner/planning/stroke.hpp"
 #include "json_configuration.hpp"
 #include "json_fields.hpp"
@@ -22,7 +20,6 @@ namespace json_io
 namespace
 {
 constexpr double DEG = M_PI / 180.0;
-constexpr double INF = std::numeric_limits<double>::infinity();
 /// Bounds on a request's work: shots and track points (a fit's time is bounded by its budget_ms).
 constexpr std::size_t MAX_CALIBRATION_SHOTS = 200;
 constexpr std::size_t MAX_TRACK_POINTS = 200000;
@@ -39,36 +36,8 @@ std::string slashed(std::string name)
   return name;
 }
 
-/// Bounds physics puts on a parameter by the kind its name says; a positive constant of no known kind may range
-/// over two decades either side of its start.
-std::pair<double, double> defaultBounds(const std::string& name, double start)
-{
-  const auto ends_with = [&](const std::string& suffix)
-  { return name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0; };
-  if (ends_with("restitution"))
-    return {0.0, 1.0};
-  if (ends_with("friction"))
-    return {0.0, 2.0};
-  if (ends_with("eta2"))
-    return {0.05, 100.0};
-  if (ends_with("stiffness_ratio"))
-    return {1e-3, 1e3};
-  if (start > 0.0)
-    return {start / 100.0, start * 100.0};
-  return {-INF, INF};
-}
-
-/// The current value of a configuration's parameter by its dotted name.
-Expected<double> currentValue(ShotConfiguration configuration, const std::string& name, const std::string& field)
-{
-  for (const NamedParameter& parameter : numericParameters(configuration))
-    if (name == parameter.name)
-      return *parameter.value;
-  return invalidArgument(field, "\"" + slashed(name) + "\" is not a physical parameter that can be fitted");
-}
-
 /// "fit": the names (the node's, with '/') or {"name", "start", "lower", "upper"}; the start defaults to the
-/// request's value, the bounds to defaultBounds().
+/// request's value, the bounds to fitParameterFor()'s.
 Expected<std::vector<FitParameter>> fitParameters(const json& request, const ShotConfiguration& configuration)
 {
   if (!request.contains("fit") || !request.at("fit").is_array() || request.at("fit").empty())
@@ -85,13 +54,10 @@ Expected<std::vector<FitParameter>> fitParameters(const json& request, const Sho
                                                                      : nullptr;
     if (!name || !name->is_string())
       return invalidArgument(field, "must be a parameter's name or {\"name\", \"start\", \"lower\", \"upper\"}");
-    FitParameter parameter;
-    parameter.name = dotted(name->get<std::string>());
-    auto start = currentValue(configuration, parameter.name, field);
-    if (!start)
-      return start.error();
-    parameter.start = start.value();
-    std::tie(parameter.lower, parameter.upper) = defaultBounds(parameter.name, parameter.start);
+    auto found = fitParameterFor(configuration, dotted(name->get<std::string>()), field);
+    if (!found)
+      return found.error();
+    FitParameter parameter = found.value();
     if (entry.is_object())
       if (Status status = readNumbers(
               entry, {{"start", &parameter.start}, {"lower", &parameter.lower}, {"upper", &parameter.upper}}, field);
@@ -197,52 +163,6 @@ Error inRequestTerms(Error error, const std::vector<std::string>& cue_balls)
   return error;
 }
 
-/// Parameters by the steps of their names ("table" → "cushion" → "restitution"): the nesting of a parameter file.
-struct ParameterTree
-{
-  std::map<std::string, ParameterTree> children;
-  double value = 0.0;
-};
-
-void emit(YAML::Emitter& out, const ParameterTree& tree)
-{
-  out << YAML::BeginMap;
-  for (const auto& [key, child] : tree.children)
-  {
-    out << YAML::Key << key << YAML::Value;
-    if (child.children.empty())
-      out << child.value;
-    else
-      emit(out, child);
-  }
-  out << YAML::EndMap;
-}
-
-/// The identifiable parameters as a parameter file for the node (nested maps under the names' steps), to load
-/// after the defaults as launch/predict_shot.launch loads config/paper_masse.yaml.
-std::string overlayYaml(const FitResult& fit)
-{
-  ParameterTree root;
-  for (const FittedParameter& p : fit.parameters)
-  {
-    if (!p.identifiable)
-      continue;
-    ParameterTree* node = &root;
-    for (std::size_t begin = 0, end = 0; begin <= p.name.size(); begin = end + 1)
-    {
-      end = std::min(p.name.find('.', begin), p.name.size());
-      node = &node->children[p.name.substr(begin, end - begin)];
-    }
-    node->value = p.value;
-  }
-  YAML::Emitter out;
-  out.SetDoublePrecision(10);
-  out << YAML::Comment("fitted by impact_solve calibrate (identifiable parameters only)");
-  if (!root.children.empty())
-    emit(out, root);
-  return std::string(out.c_str()) + "\n";
-}
-
 json answerJson(const TrackFit& fitted)
 {
   const FitResult& fit = fitted.fit;
@@ -270,7 +190,7 @@ json answerJson(const TrackFit& fitted)
               {"converged", fit.converged},
               {"iterations", fit.iterations},
               {"message", fit.message},
-              {"overlay_yaml", overlayYaml(fit)}};
+              {"overlay_yaml", calibrationOverlayYaml(fit, "fitted by impact_solve calibrate")}};
 }
 
 Status readFitOptions(const json& request, double& position_noise, FitOptions& options)

@@ -1,6 +1,7 @@
 #include "node_settings.hpp"
 #include "parameter_names.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -77,6 +78,10 @@ Status checkNodeSettings(const NodeSettings& s)
     return invalidArgument("sample_spacing", "must be in [0.001, 1] s");
   if (s.threads < 1 || s.threads > 64)
     return invalidArgument("threads", "must be in [1, 64]");
+  if (!(s.recording.track_duration > 0.0 && s.recording.track_duration <= 60.0))
+    return invalidArgument("calibration/track_duration", "must be in (0, 60] s");
+  if (s.recording.max_shots < 1 || s.recording.max_shots > 200)
+    return invalidArgument("calibration/max_shots", "must be in [1, 200]");
   return {};
 }
 }  // namespace
@@ -88,6 +93,10 @@ Expected<NodeSettings> readSettings(const ros::NodeHandle& pnh)
   pnh.param("tf_timeout", s.tf_timeout, s.tf_timeout);
   pnh.param("sample_spacing", s.sample_spacing, s.sample_spacing);
   pnh.param("threads", s.threads, s.threads);
+  pnh.param("calibration/track_duration", s.recording.track_duration, s.recording.track_duration);
+  int max_shots = static_cast<int>(s.recording.max_shots);
+  pnh.param("calibration/max_shots", max_shots, max_shots);
+  s.recording.max_shots = static_cast<std::size_t>(std::max(max_shots, 0));
   for (const NamedParameter& parameter : numericParameters(s.shot))
     pnh.param(parameterName(parameter.name), *parameter.value, *parameter.value);
   // In order: what cannot be read, then the node's own settings, then the physics.

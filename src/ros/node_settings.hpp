@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "billiard_shot_planner/calibration/shot_recorder.hpp"
 #include "billiard_shot_planner/core/expected.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
 #include "planning_settings.hpp"
@@ -19,6 +20,7 @@ struct NodeSettings
   int threads = 2;                     ///< service threads
   ShotConfiguration shot;
   PlanningSettings planning;
+  RecorderLimits recording;  ///< ~calibration/track_duration, ~calibration/max_shots
 };
 
 /// Reads every parameter (absent ones keep their defaults) and validates them. The error names the parameter.

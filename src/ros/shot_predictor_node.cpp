@@ -43,10 +43,11 @@ Status checkTable(const TableState& table)
   return {};
 }
 
-Status checkRequest(const PredictShot::Request& r, bool cue_ball_in_table)
+/// The cue's pose and speed (PredictShot's and RecordShot's): finite, a unit quaternion, a frame.
+Status checkCue(const geometry_msgs::PoseStamped& pose, double speed)
 {
-  const auto& p = r.cue_pose.pose.position;
-  const auto& q = r.cue_pose.pose.orientation;
+  const auto& p = pose.pose.position;
+  const auto& q = pose.pose.orientation;
   if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
     return invalidArgument("cue_pose.pose.position", "contains NaN or infinite values");
   if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z) || !std::isfinite(q.w))
@@ -54,14 +55,21 @@ Status checkRequest(const PredictShot::Request& r, bool cue_ball_in_table)
   const double norm = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
   if (std::abs(norm - 1.0) > QUATERNION_NORM_TOLERANCE)
     return invalidArgument("cue_pose.pose.orientation", "is not a unit quaternion (norm " + formatNumber(norm) + ")");
-  if (!std::isfinite(r.cue_speed) || r.cue_speed <= 0.0)
-    return invalidArgument("cue_speed", "must be > 0 m/s, got " + formatNumber(r.cue_speed));
+  if (!std::isfinite(speed) || speed <= 0.0)
+    return invalidArgument("cue_speed", "must be > 0 m/s, got " + formatNumber(speed));
+  // An empty frame can never be resolved: refused at once rather than after the whole tf timeout.
+  if (pose.header.frame_id.empty())
+    return invalidArgument("cue_pose.header.frame_id", "is empty: give the frame the pose is expressed in");
+  return {};
+}
+
+Status checkRequest(const PredictShot::Request& r, bool cue_ball_in_table)
+{
+  if (Status status = checkCue(r.cue_pose, r.cue_speed); !status)
+    return status;
   const auto& b = r.ball_position.point;
   if (!cue_ball_in_table && (!std::isfinite(b.x) || !std::isfinite(b.y) || !std::isfinite(b.z)))
     return invalidArgument("ball_position.point", "contains NaN or infinite values");
-  // An empty frame can never be resolved: refused at once rather than after the whole tf timeout.
-  if (r.cue_pose.header.frame_id.empty())
-    return invalidArgument("cue_pose.header.frame_id", "is empty: give the frame the pose is expressed in");
   if (!cue_ball_in_table && r.ball_position.header.frame_id.empty())
     return invalidArgument("ball_position.header.frame_id", "is empty: give the frame the point is expressed in");
   if (r.override_names.size() != r.override_values.size())
@@ -84,7 +92,10 @@ ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& pri
       tuning_mutex_, ros::NodeHandle(private_node, "tuning"));
   tuning_server_->updateConfig(toTuning(settings_.shot));
   tuning_server_->setCallback([this](ShotPredictorConfig& tuning, uint32_t level) { retune(tuning, level); });
-  table_subscriber_ = private_node.subscribe("table_state", 1, &ShotPredictorNode::storeTable, this);
+  calibration_ = std::make_unique<ShotCalibrationServer>(private_node, calibrationAccess(), settings_.recording,
+                                                         settings_.threads);
+  // A queue, not just the latest: every sighting counts for calibration.
+  table_subscriber_ = private_node.subscribe("table_state", 100, &ShotPredictorNode::storeTable, this);
   service_ = private_node.advertiseService("predict_shot", &ShotPredictorNode::predict, this);
   planner_ = std::make_unique<ShotPlannerServer>(private_node, plannerAccess(), settings_.target_frame,
                                                  settings_.sample_spacing, marker_publisher_);
@@ -163,17 +174,43 @@ ShotPlannerServer::NodeAccess ShotPredictorNode::plannerAccess()
   {
     if (Status status = checkTable(table); !status)
       return status.error();
-    return placeTable(table);
+    return placeTable(table, settings_.tf_timeout);
   };
   access.place_point = [this](const geometry_msgs::PointStamped& point, const std::string& field)
   { return placePoint(point, field); };
   return access;
 }
 
+ShotCalibrationServer::NodeAccess ShotPredictorNode::calibrationAccess()
+{
+  ShotCalibrationServer::NodeAccess access;
+  access.configuration = [this]
+  {
+    std::lock_guard<std::mutex> lock(configuration_mutex_);
+    return settings_.shot;
+  };
+  access.place_table = [this](const TableState& table, bool wait_for_tf) -> Expected<std::vector<TableBall>>
+  {
+    if (Status status = checkTable(table); !status)
+      return status.error();
+    return placeTable(table, wait_for_tf ? settings_.tf_timeout : 0.0);
+  };
+  access.place_cue = [this](const geometry_msgs::PoseStamped& pose, double speed) -> Expected<CuePlacement>
+  {
+    if (Status status = checkCue(pose, speed); !status)
+      return status.error();
+    return placeCuePose(pose, speed);
+  };
+  return access;
+}
+
 void ShotPredictorNode::storeTable(const TableState::ConstPtr& table)
 {
-  std::lock_guard<std::mutex> lock(table_mutex_);
-  latest_table_ = *table;
+  {
+    std::lock_guard<std::mutex> lock(table_mutex_);
+    latest_table_ = *table;
+  }
+  calibration_->observe(*table);
 }
 
 TableState ShotPredictorNode::tableFor(const TableState& given) const
@@ -184,7 +221,7 @@ TableState ShotPredictorNode::tableFor(const TableState& given) const
   return latest_table_;
 }
 
-Expected<std::vector<TableBall>> ShotPredictorNode::placeTable(const TableState& table) const
+Expected<std::vector<TableBall>> ShotPredictorNode::placeTable(const TableState& table, double tf_timeout) const
 {
   std::vector<TableBall> balls;
   for (std::size_t i = 0; i < table.balls.size(); ++i)
@@ -194,7 +231,7 @@ Expected<std::vector<TableBall>> ShotPredictorNode::placeTable(const TableState&
     point.point = table.balls[i].position;
     try
     {
-      point = buffer_.transform(point, settings_.target_frame, ros::Duration(settings_.tf_timeout));
+      point = buffer_.transform(point, settings_.target_frame, ros::Duration(tf_timeout));
     }
     catch (const tf2::TransformException& e)
     {
@@ -207,31 +244,34 @@ Expected<std::vector<TableBall>> ShotPredictorNode::placeTable(const TableState&
   return balls;
 }
 
-Expected<CuePlacement> ShotPredictorNode::placeCue(const PredictShot::Request& request, bool cue_ball_in_table) const
+Expected<CuePlacement> ShotPredictorNode::placeCuePose(const geometry_msgs::PoseStamped& cue_pose, double speed) const
 {
   geometry_msgs::PoseStamped pose;
   try
   {
-    pose = buffer_.transform(request.cue_pose, settings_.target_frame, ros::Duration(settings_.tf_timeout));
+    pose = buffer_.transform(cue_pose, settings_.target_frame, ros::Duration(settings_.tf_timeout));
   }
   catch (const tf2::TransformException& e)
   {
     return invalidArgument("cue_pose.header.frame_id", std::string("no transform to the table frame: ") + e.what());
   }
-  Eigen::Vector2d ball = Eigen::Vector2d::Zero();  // given by the table when it holds the cue ball
-  if (!cue_ball_in_table)
-  {
-    auto placed = placePoint(request.ball_position, "ball_position");
-    if (!placed)
-      return placed.error();
-    ball = placed.value();
-  }
   const auto& q = pose.pose.orientation;
   CuePlacement cue;
   cue.tip = Eigen::Vector3d(pose.pose.position.x, pose.pose.position.y, pose.pose.position.z);
   cue.direction = Eigen::Quaterniond(q.w, q.x, q.y, q.z).normalized() * Eigen::Vector3d::UnitX();
-  cue.speed = request.cue_speed;
-  cue.ball = ball;
+  cue.speed = speed;
+  return cue;
+}
+
+Expected<CuePlacement> ShotPredictorNode::placeCue(const PredictShot::Request& request, bool cue_ball_in_table) const
+{
+  auto cue = placeCuePose(request.cue_pose, request.cue_speed);
+  if (!cue || cue_ball_in_table)
+    return cue;  // the table gives the cue ball's place when it holds the cue ball
+  auto placed = placePoint(request.ball_position, "ball_position");
+  if (!placed)
+    return placed.error();
+  cue.value().ball = placed.value();
   return cue;
 }
 
@@ -250,7 +290,7 @@ bool ShotPredictorNode::predict(PredictShot::Request& request, PredictShot::Resp
   auto configuration = configurationWith(request.override_names, request.override_values);
   if (!configuration)
     return fail(configuration.error());
-  auto balls = placeTable(table);
+  auto balls = placeTable(table, settings_.tf_timeout);
   if (!balls)
     return fail(balls.error());
   auto cue = placeCue(request, hasCueBall(table));

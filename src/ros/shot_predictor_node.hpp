@@ -13,12 +13,14 @@
 #include <mutex>
 
 #include "node_settings.hpp"
+#include "shot_calibration_server.hpp"
 #include "shot_planner_server.hpp"
 
 namespace billiard_shot_planner
 {
 /// The ROS face of the core library: ~predict_shot in, ~prediction and ~trajectory_markers out; the planner's
-/// ~plan_shot and ~plan_shot_now (ShotPlannerServer) share its table, tf buffer and configuration. A thin adapter:
+/// ~plan_shot and ~plan_shot_now (ShotPlannerServer) and calibration's ~record_shot, ~fit_calibration and
+/// ~clear_shots (ShotCalibrationServer) share its table, tf buffer and configuration. A thin adapter:
 /// messages and tf2 in, predictShot(), messages and markers out. The core is pure and thread-safe, so the service
 /// may be served by several threads at once; the physical parameters can be tuned at run time (~tuning, through
 /// dynamic_reconfigure), each request using a consistent snapshot of them.
@@ -37,8 +39,10 @@ private:
   Expected<CuePlacement> placeCue(const PredictShot::Request& request, bool cue_ball_in_table) const;
   /// `given` (a request's or a goal's table), or the latest one received on ~table_state when it is empty.
   TableState tableFor(const TableState& given) const;
-  /// The table's balls in the table frame (at rest on the cloth).
-  Expected<std::vector<TableBall>> placeTable(const TableState& table) const;
+  /// The cue's tip and direction in the table frame, at `speed` (its ball left at the origin).
+  Expected<CuePlacement> placeCuePose(const geometry_msgs::PoseStamped& cue_pose, double speed) const;
+  /// The table's balls in the table frame (at rest on the cloth), waiting for tf at most `tf_timeout` seconds.
+  Expected<std::vector<TableBall>> placeTable(const TableState& table, double tf_timeout) const;
   void storeTable(const TableState::ConstPtr& table);
   /// The node's configuration (and, when `planning` is given, its planning settings) with per-call overrides.
   Expected<ShotConfiguration> configurationWith(const std::vector<std::string>& names,
@@ -47,6 +51,7 @@ private:
   /// A point in the table frame; errors name `field`.
   Expected<Eigen::Vector2d> placePoint(const geometry_msgs::PointStamped& point, const std::string& field) const;
   ShotPlannerServer::NodeAccess plannerAccess();
+  ShotCalibrationServer::NodeAccess calibrationAccess();
   /// A change through ~tuning: applied whole, or rejected whole with `tuning` reset to the node's configuration and
   /// the reason in tuning.rejected (the server answers the client with it).
   void retune(ShotPredictorConfig& tuning, uint32_t level);
@@ -65,6 +70,7 @@ private:
   mutable std::mutex table_mutex_;  ///< guards latest_table_ against the subscriber's callback
   TableState latest_table_;
   std::unique_ptr<ShotPlannerServer> planner_;
+  std::unique_ptr<ShotCalibrationServer> calibration_;
 };
 
 }  // namespace billiard_shot_planner

@@ -1,0 +1,226 @@
+#include "shot_calibration_server.hpp"
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "billiard_shot_planner/calibration/fit_parameter_bounds.hpp"
+#include "billiard_shot_planner/io/calibration_overlay.hpp"
+#include "parameter_names.hpp"
+
+namespace billiard_shot_planner
+{
+namespace
+{
+constexpr double DEFAULT_POSITION_NOISE = 0.002;  // m, a camera tracker's typical error
+constexpr double DEFAULT_BUDGET = 60.0;           // s
+constexpr double MAX_BUDGET = 3600.0;             // s
+constexpr int MAX_STARTS = 1000;
+
+template <class Response>
+bool failWith(const Error& error, const char* service, Response& response)
+{
+  response.success = false;
+  response.message = error.describe();
+  ROS_WARN("%s: %s", service, response.message.c_str());
+  return true;  // a refused request is an answer, not a failed call
+}
+
+Expected<std::vector<FitParameter>> fitParameters(const std::vector<std::string>& names,
+                                                  const ShotConfiguration& configuration)
+{
+  if (names.empty())
+    return invalidArgument("fit", "is empty: name the parameters to fit, e.g. motion/sliding_friction");
+  std::vector<FitParameter> parameters;
+  for (std::size_t i = 0; i < names.size(); ++i)
+  {
+    auto parameter = fitParameterFor(configuration, configurationPath(names[i]), "fit[" + std::to_string(i) + "]");
+    if (!parameter)
+      return parameter.error();
+    parameters.push_back(parameter.value());
+  }
+  return parameters;
+}
+
+Status readFitOptions(const FitCalibration::Request& request, int threads, double& position_noise, FitOptions& options)
+{
+  position_noise = request.position_noise == 0.0 ? DEFAULT_POSITION_NOISE : request.position_noise;
+  if (!(std::isfinite(position_noise) && position_noise > 0.0))
+    return invalidArgument("position_noise", "must be > 0 m (0: 0.002 m)");
+  if (request.starts < 0 || request.starts > MAX_STARTS)
+    return invalidArgument("starts", "must be in [1, 1000] (0: 1)");
+  const double budget = request.budget == 0.0 ? DEFAULT_BUDGET : request.budget;
+  if (!(budget > 0.0 && budget <= MAX_BUDGET))
+    return invalidArgument("budget", "must be in (0, 3600] s (0: 60 s)");
+  if (!(std::isfinite(request.robust_loss_sigmas) && request.robust_loss_sigmas >= 0.0))
+    return invalidArgument("robust_loss_sigmas", "must be finite and >= 0 (0: plain least squares)");
+  options.starts = request.starts == 0 ? 1 : request.starts;
+  options.max_seconds = budget;
+  options.robust_loss_sigmas = request.robust_loss_sigmas;
+  options.threads = threads;
+  return {};
+}
+
+/// A fit's error in the service's terms: parameters by their node names, the noise by its field.
+Error inRequestTerms(Error error)
+{
+  if (error.field == "position_sigma")
+    error.field = "position_noise";
+  else if (error.field.rfind("shots", 0) != 0)
+    error.field = parameterName(error.field);
+  return error;
+}
+
+void fillAnswer(const TrackFit& fitted, std::size_t shots, FitCalibration::Response& response)
+{
+  const FitResult& fit = fitted.fit;
+  for (const FittedParameter& p : fit.parameters)
+  {
+    response.names.push_back(parameterName(p.name));
+    response.values.push_back(p.value);
+    response.sigmas.push_back(p.identifiable ? p.sigma : std::numeric_limits<double>::infinity());
+    response.identifiable.push_back(p.identifiable);
+    response.at_bound.push_back(p.at_bound);
+  }
+  // Eigen stores by column: the transpose's storage is the matrix row by row (a correlation is symmetric anyway).
+  const Eigen::MatrixXd rows = fit.correlation.transpose();
+  response.correlation.assign(rows.data(), rows.data() + rows.size());
+  response.residuals = fitted.shot_rms;
+  response.chi2 = 2.0 * fit.final_cost;
+  response.observations = static_cast<uint32_t>(fit.residuals.size());
+  response.converged = fit.converged;
+  response.shots = static_cast<uint32_t>(shots);
+  response.overlay_yaml = calibrationOverlayYaml(fit, "fitted by shot_predictor ~fit_calibration");
+  response.success = true;
+  response.message = fit.message;
+}
+}  // namespace
+
+ShotCalibrationServer::ShotCalibrationServer(ros::NodeHandle& private_node, NodeAccess access,
+                                             const RecorderLimits& limits, int threads)
+    : access_(std::move(access)), threads_(threads), recorder_(limits)
+{
+  record_service_ = private_node.advertiseService("record_shot", &ShotCalibrationServer::recordShot, this);
+  fit_service_ = private_node.advertiseService("fit_calibration", &ShotCalibrationServer::fit, this);
+  clear_service_ = private_node.advertiseService("clear_shots", &ShotCalibrationServer::clearShots, this);
+}
+
+void ShotCalibrationServer::observe(const TableState& table)
+{
+  // No wait for tf: a sighting that cannot be placed now is dropped rather than hold up the ones behind it.
+  auto balls = access_.place_table(table, false);
+  if (!balls)
+  {
+    ROS_WARN_THROTTLE(10.0, "table_state not recorded for calibration: %s", balls.error().describe().c_str());
+    return;
+  }
+  TableSighting sighting;
+  sighting.time = table.header.stamp.isZero() ? ros::Time::now().toSec() : table.header.stamp.toSec();
+  for (const TableBall& ball : balls.value())
+    sighting.balls.emplace_back(ball.id, ball.state.position.head<2>());
+  std::lock_guard<std::mutex> lock(recorder_mutex_);
+  recorder_.observe(sighting);
+}
+
+Expected<ObservedShot> ShotCalibrationServer::executedShot(const RecordShot::Request& request, double strike_time)
+{
+  std::vector<std::pair<std::string, Eigen::Vector2d>> balls;
+  if (!request.table.balls.empty())
+  {
+    auto placed = access_.place_table(request.table, true);
+    if (!placed)
+      return placed.error();
+    for (const TableBall& ball : placed.value())
+      balls.emplace_back(ball.id, ball.state.position.head<2>());
+  }
+  else
+  {
+    std::lock_guard<std::mutex> lock(recorder_mutex_);
+    const TableSighting* before = recorder_.sightingAtOrBefore(strike_time);
+    if (!before)
+      return invalidArgument("table", "is empty and no TableState stamped at or before strike_time was received");
+    balls = before->balls;
+  }
+  auto cue = access_.place_cue(request.cue_pose, request.cue_speed);
+  if (!cue)
+    return cue.error();
+  ObservedShot shot;
+  bool cue_ball_found = false;
+  for (const auto& [id, position] : balls)
+    if (id == CUE_BALL_ID)
+    {
+      cue.value().ball = position;
+      cue_ball_found = true;
+    }
+    else
+    {
+      TableBall ball{id, {}};
+      ball.state.position = Eigen::Vector3d(position.x(), position.y(), 0.0);
+      shot.others.push_back(ball);
+    }
+  if (!cue_ball_found)
+    return invalidArgument("table.balls", "has no ball with id \"cue\": the cue ball's place before the strike");
+  shot.cue = cue.value();
+  // A shot the model cannot play (the cue misses its ball, balls overlap) would only fail the fit later.
+  auto predicted = predictShot(shot.cue, access_.configuration(), shot.others);
+  if (!predicted)
+    return predicted.error();
+  return shot;
+}
+
+bool ShotCalibrationServer::recordShot(RecordShot::Request& request, RecordShot::Response& response)
+{
+  const ros::Time strike = !request.strike_time.isZero()             ? request.strike_time
+                           : !request.cue_pose.header.stamp.isZero() ? request.cue_pose.header.stamp
+                                                                     : ros::Time::now();
+  auto shot = executedShot(request, strike.toSec());
+  if (!shot)
+    return failWith(shot.error(), "record_shot", response);
+  std::lock_guard<std::mutex> lock(recorder_mutex_);
+  auto index = recorder_.record(shot.value(), strike.toSec());
+  if (!index)
+    return failWith(index.error(), "record_shot", response);
+  response.success = true;
+  response.message = "ok";
+  response.shot_index = static_cast<uint32_t>(index.value());
+  response.shots_recorded = static_cast<uint32_t>(recorder_.shots().size());
+  return true;
+}
+
+bool ShotCalibrationServer::fit(FitCalibration::Request& request, FitCalibration::Response& response)
+{
+  const ShotConfiguration configuration = access_.configuration();
+  auto parameters = fitParameters(request.fit, configuration);
+  if (!parameters)
+    return failWith(parameters.error(), "fit_calibration", response);
+  double position_noise = DEFAULT_POSITION_NOISE;
+  FitOptions options;
+  if (Status status = readFitOptions(request, threads_, position_noise, options); !status)
+    return failWith(status.error(), "fit_calibration", response);
+  std::vector<ObservedShot> shots;
+  {
+    std::lock_guard<std::mutex> lock(recorder_mutex_);
+    shots = recorder_.shots();
+  }
+  if (shots.empty())
+    return failWith(invalidArgument("shots", "none recorded: record executed shots with ~record_shot first"),
+                    "fit_calibration", response);
+  auto fitted = fitTracks(configuration, parameters.value(), shots, position_noise, options);
+  if (!fitted)
+    return failWith(inRequestTerms(fitted.error()), "fit_calibration", response);
+  fillAnswer(fitted.value(), shots.size(), response);
+  return true;
+}
+
+bool ShotCalibrationServer::clearShots(std_srvs::Trigger::Request& /*request*/, std_srvs::Trigger::Response& response)
+{
+  std::lock_guard<std::mutex> lock(recorder_mutex_);
+  const std::size_t shots = recorder_.shots().size();
+  recorder_.clear();
+  response.success = true;
+  response.message = "cleared " + std::to_string(shots) + " recorded shots";
+  return true;
+}
+
+}  // namespace billiard_shot_planner
