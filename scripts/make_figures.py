@@ -142,9 +142,36 @@ def figure_masse(program, out):
     return [save(fig, out, "masse_paths.png")]
 
 
+# The planar states (v, ω) right after the strike of docs/validation.md's massé fits, as masse_fit prints them.
+MASSE_STATES = [
+    ("the measurement (56)", [-1.67063, -0.274431, 0], [28.4584, 79.1561, 0], ":"),
+    ("the paper's prediction (57)", [-1.67629, -0.075349, 0.637937], [40.3064, 83.6145, -15.4927], "--"),
+    ("fit 1: η² of both contacts", [-1.4532, 0.0790, 0], [25.186, 87.304, 0], "-"),
+    ("fit 1 with all four constants", [-1.5728, 0.0671, 0], [26.904, 81.961, 0], "-"),
+    ("fit 3: η² and the cue's direction", [-1.5257, 0.0617, 0], [22.780, 85.804, 0], "-"),
+]
+FIT_TIME = 1.5  # s after the strike, where the fits' paths are compared with (56)'s
+
+
+def figure_masse_fit(program, out):
+    fig, a = plt.subplots(figsize=(8, 5.5))
+    for label, v, w, style in MASSE_STATES:
+        r = solve(program, {"problem": "ball_motion", "position": [0, 0], "v": v, "omega": w, "ball_radius": 0.0286,
+                            "planar": True, "table": {"length": 40, "width": 40, "pockets": []},
+                            "sample_spacing": 0.02})
+        line, = a.plot(*xy(r["samples"]), style, label=f"from {label}")
+        at = min(r["samples"], key=lambda s: abs(s["t"] - FIT_TIME))
+        a.plot(at["position"][0], at["position"][1], "o", color=line.get_color(), ms=5)
+    finish_axes(a, "x (m)", "y (m)", f"Massé shot of §9.2 fitted to its measurement (dots: {FIT_TIME} s)",
+                legend={"fontsize": 8})
+    a.set_aspect("equal")
+    return [save(fig, out, "masse_fit_paths.png")]
+
+
 def main():
     program, out = sys.argv[1], sys.argv[2]
-    names = figure_impulse_curves(program, out) + figure_8(program, out) + figure_masse(program, out)
+    names = (figure_impulse_curves(program, out) + figure_8(program, out) + figure_masse(program, out) +
+             figure_masse_fit(program, out))
     for n in names:
         print(f"{out}/{n}")
 
