@@ -1,7 +1,7 @@
 // Writes the seed corpus of fuzz_impact_engine (engine_input.hpp's format) into the directory given: the paper's
 // problems as the scenario builders make them, and a few small ones. Each seed is decoded again and compared with
 // what was written, and solved. Run by hand after a change of the format:
-//   build-fuzz/make_engine_seeds fuzz/corpus/fuzz_impact_engine
+//   build-asan/fuzz/make_engine_seeds fuzz/corpus/fuzz_impact_engine
 #include <cstdio>
 #include <fstream>
 #include <string>

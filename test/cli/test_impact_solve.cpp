@@ -688,7 +688,7 @@ TEST(ImpactSolve, CalibrateBadInputNamesTheObservation)
   bad["shots"][0]["tracks"]["white"][2] = {0.1, "x", 0.2};
   expectField(bad, "shots[0].tracks.white[2]");
   bad = good;
-  bad["shots"][0]["tracks"]["seven"] = {{0.0, 0.1, 0.1}};
+  bad["shots"][0]["tracks"]["seven"] = nlohmann::json::array({{0.0, 0.1, 0.1}});
   expectField(bad, "shots[0].tracks.seven");
   bad = good;
   bad["shots"][0].erase("cue");
@@ -697,14 +697,14 @@ TEST(ImpactSolve, CalibrateBadInputNamesTheObservation)
   bad["fit"] = {"motion/colour"};
   expectField(bad, "fit[0]");
   bad = good;
-  bad["fit"] = {{{"name", "motion/sliding_friction"}, {"lower", 0.5}, {"upper", 0.1}}};
+  bad["fit"] = nlohmann::json::array({{{"name", "motion/sliding_friction"}, {"lower", 0.5}, {"upper", 0.1}}});
   expectField(bad, "motion/sliding_friction");
   bad = good;
   bad["position_noise"] = 0.0;
   expectField(bad, "position_noise");
   bad = good;
-  bad["shots"] = {good["shots"][0]};
-  bad["shots"][0]["tracks"]["white"] = {{0.0, -0.6, 0.0}};
+  bad["shots"] = nlohmann::json::array({good["shots"][0]});
+  bad["shots"][0]["tracks"]["white"] = nlohmann::json::array({{0.0, -0.6, 0.0}});
   bad["fit"] = {"motion/sliding_friction", "motion/rolling_friction", "table/cushion/restitution"};
   expectField(bad, "shots");
   bad = good;
