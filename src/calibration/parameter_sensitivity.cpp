@@ -29,6 +29,13 @@ Eigen::MatrixXd scaledColumns(const Eigen::MatrixXd& jacobian, const std::vector
 Eigen::MatrixXd inverseNormalMatrix(const Eigen::MatrixXd& jacobian)
 {
   const Eigen::Index n = jacobian.cols();
+  if (n == 0 || jacobian.rows() == 0)
+  {
+    // No parameter, or no residual: nothing is determined (and Eigen's SVD needs a matrix with entries).
+    Eigen::MatrixXd inverse = Eigen::MatrixXd::Zero(n, n);
+    inverse.diagonal().setConstant(INFINITE);
+    return inverse;
+  }
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian, Eigen::ComputeFullV);
   const Eigen::VectorXd& singular = svd.singularValues();
   const double largest = singular.size() > 0 ? singular(0) : 0.0;

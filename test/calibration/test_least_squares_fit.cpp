@@ -120,6 +120,30 @@ TEST(LeastSquaresFit, ParametersTheDataCannotSeparateAreReportedNotFitted)
   EXPECT_NEAR(p[2].value, line(1), 1e-6);
 }
 
+TEST(LeastSquaresFit, DataThatDetermineNothingLeaveEveryParameterAtItsStart)
+{
+  // Residuals that no parameter moves: none is identifiable, each keeps its start with an infinite σ. (The fuzzer
+  // found a calibrate input whose four track points determined neither of its two parameters: the covariance of no
+  // parameter at all asked Eigen for the SVD of an empty matrix.)
+  const Quadratic data(4);
+  const auto fit =
+      bsp::fitLeastSquares({{"a", 0.2, -10.0, 10.0}, {"b", 3.0, 0.0, 10.0}}, static_cast<int>(data.x.size()),
+                           [&](const std::vector<double>&, Eigen::VectorXd& r)
+                           {
+                             r = data.y / data.sigma;
+                             return true;
+                           });
+  ASSERT_TRUE(fit.ok()) << fit.error().describe();
+  for (const bsp::FittedParameter& p : fit->parameters)
+  {
+    EXPECT_FALSE(p.identifiable) << p.name;
+    EXPECT_TRUE(std::isinf(p.sigma)) << p.name;
+  }
+  EXPECT_EQ(fit->parameters[0].value, 0.2);
+  EXPECT_EQ(fit->parameters[1].value, 3.0);
+  EXPECT_TRUE(std::isnan(fit->correlation(0, 1)));
+}
+
 TEST(LeastSquaresFit, BoundsHoldAndAreReported)
 {
   const Quadratic data(5);
