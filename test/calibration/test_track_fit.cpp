@@ -132,6 +132,58 @@ TEST(TrackFit, ItsSigmaCoversTheTruthAsOftenAsItShould)
   EXPECT_NEAR(static_cast<double>(within) / total, 0.683, 0.23);
 }
 
+/// Cut shots of the cue ball onto the object ball "one" at (0.3, 0), both balls tracked at 30 Hz for up to 2.5 s.
+std::vector<bsp::ObservedShot> cutShots(const bsp::ShotConfiguration& c, std::mt19937& rng)
+{
+  std::normal_distribution<double> noise(0.0, CAMERA_SIGMA);
+  std::vector<bsp::ObservedShot> shots;
+  // From the left, aimed at the object ball's centre offset sideways by 0, ±0.6 R and ±1.2 R: full to thin cuts.
+  for (double offset : {0.0, 0.6 * R, -0.6 * R, 1.2 * R, -1.2 * R})
+  {
+    const Eigen::Vector2d ball(-0.4, 0.0), aim(0.3, offset);
+    const Eigen::Vector2d d = (aim - ball).normalized();
+    const bsp::CuePlacement cue = stroke(ball.x(), ball.y(), std::atan2(d.y(), d.x()) * 180.0 / M_PI, 2.0, 0.0);
+    bsp::ObservedShot shot{cue, {{"one", {}}}, {}};
+    shot.others[0].state.position = Eigen::Vector3d(0.3, 0.0, R);
+    const auto outcome = bsp::predictShot(cue, c, shot.others);
+    EXPECT_TRUE(outcome.ok()) << outcome.error().describe();
+    for (std::size_t b = 0; b < outcome->table.ids.size(); ++b)
+    {
+      const bsp::BallTrajectory& path = outcome->table.balls[b];
+      for (double t = 0.0; t <= std::min(2.5, path.duration()); t += FRAME)
+        shot.tracks[outcome->table.ids[b]].push_back(
+            {t, path.at(t).position.head<2>() + Eigen::Vector2d(noise(rng), noise(rng))});
+    }
+    shots.push_back(shot);
+  }
+  return shots;
+}
+
+TEST(TrackFit, RecoversTheBallBallConstantsFromCutShots)
+{
+  // The constant friction model, so that the ball–ball friction is one number: 0.08 and e = 0.9 drew the tracks,
+  // the fit starts from the defaults (0.05, 0.95).
+  bsp::ShotConfiguration start;
+  start.ball_contact.friction_model = bsp::BallBallFriction::Constant;
+  bsp::ShotConfiguration drawn = start;
+  drawn.ball_contact.ball_ball.restitution = 0.9;
+  drawn.ball_contact.ball_ball.friction = 0.08;
+  std::mt19937 rng(4);
+  const auto fitted =
+      bsp::fitTracks(start, {{"ball_ball.restitution", 0.95, 0.0, 1.0}, {"ball_ball.friction", 0.05, 0.0, 1.0}},
+                     cutShots(drawn, rng), CAMERA_SIGMA, slowMachineBudget());
+  ASSERT_TRUE(fitted.ok()) << fitted.error().describe();
+  const double truth[] = {0.9, 0.08};
+  for (int i = 0; i < 2; ++i)
+  {
+    const bsp::FittedParameter& p = fitted->fit.parameters[i];
+    std::printf("%s: %.5f ± %.5f (truth %g)\n", p.name.c_str(), p.value, p.sigma, truth[i]);
+    EXPECT_TRUE(p.identifiable) << p.name;
+    EXPECT_NEAR(p.value, truth[i], 3.0 * p.sigma) << p.name;
+    EXPECT_LT(p.sigma, 0.1 * truth[i]) << p.name;
+  }
+}
+
 TEST(TrackFit, AShotThatMeetsNoCushionSaysNothingOfIt)
 {
   // A slow stun shot along the table's length, at rest before the far cushion.
