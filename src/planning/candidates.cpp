@@ -153,16 +153,16 @@ void addCandidates(const TableBall& target, int pocket, const PlanContext& conte
 }
 }  // namespace
 
-double clearanceMargin(const PlanContext& context)
+ClearanceMargin clearanceMargin(const PlanContext& context)
 {
   const ExecutionNoise& noise = context.request.noise;
-  return 3.0 * std::hypot(noise.phi, noise.theta) * context.request.limits.cue_length;
+  return {3.0 * std::hypot(noise.a, noise.b), 3.0 * std::hypot(noise.phi, noise.theta)};
 }
 
 std::optional<double> clearElevation(Stroke stroke, const PlanContext& context, double from)
 {
   const RobotLimits& limits = context.request.limits;
-  const double margin = clearanceMargin(context);
+  const ClearanceMargin margin = clearanceMargin(context);
   for (double theta = std::max(from, limits.min_theta); theta <= limits.max_theta + 1e-12; theta += ELEVATION_STEP)
   {
     stroke.theta = theta;

@@ -40,10 +40,11 @@ struct CandidateSearch
 /// dominates.
 constexpr double MAX_CUT = 80.0 * M_PI / 180.0;
 
-/// Room the cue keeps from the balls and the rails in a planned stroke: three standard deviations of its aim and
-/// elevation noise over its length, so that noisy strokes rarely touch what the nominal one clears (at the lowest
-/// elevation that clears without it, a quarter of the noisy strokes put the cue into a rail).
-double clearanceMargin(const PlanContext& context);
+/// Room the cue keeps from the balls and the rails in a planned stroke, so that noisy strokes rarely touch what the
+/// nominal one clears (at the lowest elevation that clears without it, a quarter of the noisy strokes put the cue
+/// into a rail): three standard deviations of the hit point's noise everywhere, and of the aim's and elevation's
+/// noise times the distance from the tip (the cue turns about its tip).
+ClearanceMargin clearanceMargin(const PlanContext& context);
 
 /// The lowest elevation from `from` (at least the limits' minimum, in steps of 2°) whose cue clears the balls and the
 /// rails with the clearance margin, if any within the limits.

@@ -7,14 +7,23 @@ namespace billiard_shot_planner
 {
 namespace
 {
+/// Room kept at `along` metres behind the tip.
+struct Margin
+{
+  double offset = 0.0;
+  double per_metre = 0.0;
+
+  double at(double along) const { return offset + per_metre * along; }
+};
+
 bool clearsTheBalls(const Eigen::Vector3d& tip, const Eigen::Vector3d& back, const std::vector<TableBall>& others,
-                    const RobotLimits& limits, double ball_radius, double margin)
+                    const RobotLimits& limits, double ball_radius, const Margin& margin)
 {
   for (const TableBall& ball : others)
   {
     const Eigen::Vector3d centre = ball.state.position;
     const double along = std::clamp((centre - tip).dot(back), 0.0, limits.cue_length);
-    if ((tip + along * back - centre).norm() < ball_radius + limits.cue_radius + margin)
+    if ((tip + along * back - centre).norm() < ball_radius + limits.cue_radius + margin.at(along))
       return false;
   }
   return true;
@@ -23,7 +32,7 @@ bool clearsTheBalls(const Eigen::Vector3d& tip, const Eigen::Vector3d& back, con
 /// Where the cue's axis crosses a rail line (the edge of the playing surface) within its length, its underside is
 /// above the rails' top.
 bool passesAboveTheRails(const Eigen::Vector3d& tip, const Eigen::Vector3d& back, const Table& table,
-                         const RobotLimits& limits, double margin)
+                         const RobotLimits& limits, const Margin& margin)
 {
   for (int axis = 0; axis < 2; ++axis)
   {
@@ -34,7 +43,7 @@ bool passesAboveTheRails(const Eigen::Vector3d& tip, const Eigen::Vector3d& back
     {
       const double along = (side * half - tip(axis)) / back(axis);
       if (along > 0.0 && along <= limits.cue_length &&
-          tip.z() + along * back.z() - limits.cue_radius - margin < limits.rail_height)
+          tip.z() + along * back.z() - limits.cue_radius - margin.at(along) < limits.rail_height)
         return false;
     }
   }
@@ -43,19 +52,20 @@ bool passesAboveTheRails(const Eigen::Vector3d& tip, const Eigen::Vector3d& back
 }  // namespace
 
 bool cueClears(const CuePlacement& cue, const std::vector<TableBall>& others, const Table& table,
-               const RobotLimits& limits, double ball_radius, double margin)
+               const RobotLimits& limits, double ball_radius, double margin, double margin_per_metre)
 {
   const Eigen::Vector3d back = -cue.direction.normalized();  // from the tip towards the butt
-  return clearsTheBalls(cue.tip, back, others, limits, ball_radius, margin) &&
-         passesAboveTheRails(cue.tip, back, table, limits, margin);
+  const Margin room{margin, margin_per_metre};
+  return clearsTheBalls(cue.tip, back, others, limits, ball_radius, room) &&
+         passesAboveTheRails(cue.tip, back, table, limits, room);
 }
 
 namespace planning
 {
-bool cueClears(const CuePlacement& cue, const PlanContext& context, double margin)
+bool cueClears(const CuePlacement& cue, const PlanContext& context, const ClearanceMargin& margin)
 {
   return billiard_shot_planner::cueClears(cue, context.others, context.configuration.table, context.request.limits,
-                                          context.radius(), margin);
+                                          context.radius(), margin.offset, margin.per_metre);
 }
 
 }  // namespace planning

@@ -64,8 +64,15 @@ constexpr double UNPLAYABLE_MARGIN = -10.0;
 StrokeEvaluation evaluateStroke(const Stroke& stroke, const std::string& target, int pocket,
                                 const PlanContext& context);
 
+/// Room the cue keeps from the balls and the rails: `offset` everywhere and `per_metre` for each metre from its tip.
+struct ClearanceMargin
+{
+  double offset = 0.0;     ///< m
+  double per_metre = 0.0;  ///< m per m (rad)
+};
+
 /// Whether the cue, placed for the stroke, keeps clear of every other ball and passes above the rails, by `margin`.
-bool cueClears(const CuePlacement& cue, const PlanContext& context, double margin = 0.0);
+bool cueClears(const CuePlacement& cue, const PlanContext& context, const ClearanceMargin& margin = {});
 
 }  // namespace planning
 }  // namespace billiard_shot_planner

@@ -147,11 +147,12 @@ struct ShotPlan
   double seconds = 0.0;
 };
 
-/// Whether the cue placed at `cue` (a cylinder of limits.cue_radius along limits.cue_length behind its tip) keeps
-/// `margin` from every ball of `others` and passes `margin` above the rails (limits.rail_height) where it crosses
-/// them. The cue ball, which the tip touches, is not among `others`.
+/// Whether the cue placed at `cue` (a cylinder of limits.cue_radius along limits.cue_length behind its tip) keeps a
+/// margin from every ball of `others` and passes that margin above the rails (limits.rail_height) where it crosses
+/// them: `margin` plus `margin_per_metre` times the distance from the tip (a turn of the cue about its tip moves it
+/// in proportion). The cue ball, which the tip touches, is not among `others`.
 bool cueClears(const CuePlacement& cue, const std::vector<TableBall>& others, const Table& table,
-               const RobotLimits& limits, double ball_radius, double margin = 0.0);
+               const RobotLimits& limits, double ball_radius, double margin = 0.0, double margin_per_metre = 0.0);
 
 /// Checks of the parts a node reads from its parameters; errors name the field ("limits.speed", "noise.phi").
 Status validate(const RobotLimits& limits);
