@@ -7,17 +7,10 @@ namespace billiard_shot_planner
 {
 namespace
 {
-/// Room kept at `along` metres behind the tip.
-struct Margin
-{
-  double offset = 0.0;
-  double per_metre = 0.0;
-
-  double at(double along) const { return offset + per_metre * along; }
-};
+using planning::ClearanceMargin;
 
 bool clearsTheBalls(const Eigen::Vector3d& tip, const Eigen::Vector3d& back, const std::vector<TableBall>& others,
-                    const RobotLimits& limits, double ball_radius, const Margin& margin)
+                    const RobotLimits& limits, double ball_radius, const ClearanceMargin& margin)
 {
   for (const TableBall& ball : others)
   {
@@ -32,7 +25,7 @@ bool clearsTheBalls(const Eigen::Vector3d& tip, const Eigen::Vector3d& back, con
 /// Where the cue's axis crosses a rail line (the edge of the playing surface) within its length, its underside is
 /// above the rails' top.
 bool passesAboveTheRails(const Eigen::Vector3d& tip, const Eigen::Vector3d& back, const Table& table,
-                         const RobotLimits& limits, const Margin& margin)
+                         const RobotLimits& limits, const ClearanceMargin& margin)
 {
   for (int axis = 0; axis < 2; ++axis)
   {
@@ -55,7 +48,7 @@ bool cueClears(const CuePlacement& cue, const std::vector<TableBall>& others, co
                const RobotLimits& limits, double ball_radius, double margin, double margin_per_metre)
 {
   const Eigen::Vector3d back = -cue.direction.normalized();  // from the tip towards the butt
-  const Margin room{margin, margin_per_metre};
+  const ClearanceMargin room{margin, margin_per_metre};
   return clearsTheBalls(cue.tip, back, others, limits, ball_radius, room) &&
          passesAboveTheRails(cue.tip, back, table, limits, room);
 }

@@ -69,6 +69,9 @@ struct ClearanceMargin
 {
   double offset = 0.0;     ///< m
   double per_metre = 0.0;  ///< m per m (rad)
+
+  /// The room at `along` metres behind the tip.
+  double at(double along) const { return offset + per_metre * along; }
 };
 
 /// Whether the cue, placed for the stroke, keeps clear of every other ball and passes above the rails, by `margin`.
