@@ -1,7 +1,6 @@
 #include "shot_calibration_server.hpp"
 
 #include <cmath>
-#include <limits>
 #include <string>
 #include <utility>
 
@@ -72,6 +71,16 @@ Error inRequestTerms(Error error)
   return error;
 }
 
+/// The balls' centres on the table, by id: what a sighting and a shot's table keep of them.
+std::vector<std::pair<std::string, Eigen::Vector2d>> centres(const std::vector<TableBall>& balls)
+{
+  std::vector<std::pair<std::string, Eigen::Vector2d>> placed;
+  placed.reserve(balls.size());
+  for (const TableBall& ball : balls)
+    placed.emplace_back(ball.id, ball.state.position.head<2>());
+  return placed;
+}
+
 void fillAnswer(const TrackFit& fitted, std::size_t shots, FitCalibration::Response& response)
 {
   const FitResult& fit = fitted.fit;
@@ -79,7 +88,7 @@ void fillAnswer(const TrackFit& fitted, std::size_t shots, FitCalibration::Respo
   {
     response.names.push_back(parameterName(p.name));
     response.values.push_back(p.value);
-    response.sigmas.push_back(p.identifiable ? p.sigma : std::numeric_limits<double>::infinity());
+    response.sigmas.push_back(p.sigma);  // infinite when not identifiable
     response.identifiable.push_back(p.identifiable);
     response.at_bound.push_back(p.at_bound);
   }
@@ -117,8 +126,7 @@ void ShotCalibrationServer::observe(const TableState& table)
   }
   TableSighting sighting;
   sighting.time = table.header.stamp.isZero() ? ros::Time::now().toSec() : table.header.stamp.toSec();
-  for (const TableBall& ball : balls.value())
-    sighting.balls.emplace_back(ball.id, ball.state.position.head<2>());
+  sighting.balls = centres(balls.value());
   std::lock_guard<std::mutex> lock(recorder_mutex_);
   recorder_.observe(sighting);
 }
@@ -131,8 +139,7 @@ Expected<ObservedShot> ShotCalibrationServer::executedShot(const RecordShot::Req
     auto placed = access_.place_table(request.table, true);
     if (!placed)
       return placed.error();
-    for (const TableBall& ball : placed.value())
-      balls.emplace_back(ball.id, ball.state.position.head<2>());
+    balls = centres(placed.value());
   }
   else
   {

@@ -25,8 +25,8 @@ public:
   {
     /// The node's configuration as tuned now.
     std::function<ShotConfiguration()> configuration;
-    /// The balls in the table frame, waiting for tf at most `timeout` seconds.
-    std::function<Expected<std::vector<TableBall>>(const TableState&, double timeout)> place_table;
+    /// The balls in the table frame, waiting for tf up to the node's tf_timeout when `wait_for_tf`, else not at all.
+    std::function<Expected<std::vector<TableBall>>(const TableState&, bool wait_for_tf)> place_table;
     /// The cue's tip and direction in the table frame; its ball is left for the caller to place.
     std::function<Expected<CuePlacement>(const geometry_msgs::PoseStamped&, double speed)> place_cue;
   };
