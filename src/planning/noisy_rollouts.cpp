@@ -37,14 +37,14 @@ double PotEstimate::high() const
   return std::max(wilsonBound(*this, 1.0), probability());
 }
 
-NoisyRollouts::NoisyRollouts(const Stroke& nominal, std::string target, int pocket, unsigned seed,
+NoisyRollouts::NoisyRollouts(const Stroke& nominal, std::string target, int pocket, unsigned seed, int count,
                              const PlanContext& context)
     : target_(std::move(target)), pocket_(pocket), context_(context)
 {
   std::mt19937_64 random(seed);
-  const auto count = static_cast<std::size_t>(std::max(context.request.rollouts, 0));
-  strokes_.reserve(count);
-  for (std::size_t k = 0; k < count; ++k)
+  const auto strokes = static_cast<std::size_t>(std::max(count, 0));
+  strokes_.reserve(strokes);
+  for (std::size_t k = 0; k < strokes; ++k)
     strokes_.push_back(noisyStroke(nominal, context.request.noise, context.radius(), random));
 }
 

@@ -27,7 +27,9 @@ struct PotEstimate
 class NoisyRollouts
 {
 public:
-  NoisyRollouts(const Stroke& nominal, std::string target, int pocket, unsigned seed, const PlanContext& context);
+  /// `count` noisy strokes of `nominal`, drawn from `seed`.
+  NoisyRollouts(const Stroke& nominal, std::string target, int pocket, unsigned seed, int count,
+                const PlanContext& context);
 
   /// Plays up to `count` more rollouts on `threads` threads; those not started by `deadline` are not played.
   void play(int count, int threads, Clock::time_point deadline);

@@ -18,9 +18,12 @@ namespace
 /// Shares of the budget: the refinement of candidates ends at the first, the ranking of the shots that pot by their
 /// rollouts at the second; the rest confirms the chosen shot's probability with rollouts of its own.
 constexpr double REFINEMENT_SHARE = 0.5;
-constexpr double RANKING_SHARE = 0.8;
+constexpr double RANKING_SHARE = 0.7;
 /// Seeds of the confirming rollouts: another stream than the ranking's.
 constexpr unsigned CONFIRMATION_SEED_OFFSET = 1000003u;
+/// The chosen shot's probability is confirmed with up to this many times the request's rollouts, as far as the
+/// budget goes: 200 rollouts put the estimate within ±0.07 at 95 % near p = 0.5, 800 within ±0.035.
+constexpr int CONFIRMATION_FACTOR = 4;
 /// How many shots that pot are ranked by rollouts, and how many rollouts each gets per round.
 constexpr std::size_t RANKED_SHOTS = 4;
 constexpr int ROLLOUT_BATCH = 25;
@@ -122,7 +125,7 @@ std::vector<PlannedShot> rankByRollouts(const std::vector<RefinedShot>& refined,
   {
     shots.push_back(plannedShot(refined[k], context));
     rollouts.emplace_back(shots.back().stroke, shots.back().target, shots.back().pocket,
-                          context.request.seed + static_cast<unsigned>(k), context);
+                          context.request.seed + static_cast<unsigned>(k), context.request.rollouts, context);
   }
   const int threads = threadCount(context.request);
   int played = 0;
@@ -160,7 +163,7 @@ std::vector<PlannedShot> rankByRollouts(const std::vector<RefinedShot>& refined,
 void confirm(PlannedShot& best, const PlanContext& context, int& evaluations)
 {
   NoisyRollouts rollouts(best.stroke, best.target, best.pocket, context.request.seed + CONFIRMATION_SEED_OFFSET,
-                         context);
+                         CONFIRMATION_FACTOR * context.request.rollouts, context);
   const int threads = threadCount(context.request);
   while (!rollouts.finished() && !context.pastDeadline())
     rollouts.play(ROLLOUT_BATCH, threads, context.deadline);

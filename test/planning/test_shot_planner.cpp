@@ -103,7 +103,9 @@ TEST(ShotPlanner, AStraightInShotIsPlannedAlongTheLineOfCentres)
   EXPECT_GT(plan.best.success_probability, 0.9);
   EXPECT_LE(plan.best.confidence_low, plan.best.success_probability);
   EXPECT_GE(plan.best.confidence_high, plan.best.success_probability);
-  EXPECT_EQ(plan.best.rollouts, request.rollouts);
+  // Ranked on the request's rollouts, confirmed (when another shot was ranked) on up to four times as many.
+  EXPECT_GE(plan.best.rollouts, request.rollouts);
+  EXPECT_LE(plan.best.rollouts, 4 * request.rollouts);
 }
 
 // The planner's pot probability of a 40° cut against 1 000 fresh noisy rollouts drawn here, with another generator,
