@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <thread>
+#include <utility>
 
 #include "billiard_shot_planner/core/validation.hpp"
 #include "candidates.hpp"
@@ -19,6 +20,8 @@ namespace
 /// rollouts at the second; the rest confirms the chosen shot's probability with rollouts of its own.
 constexpr double REFINEMENT_SHARE = 0.5;
 constexpr double RANKING_SHARE = 0.7;
+/// When the leader's confirmation has had the time to this share, a runner-up that may be better is confirmed too.
+constexpr double CONFIRMATION_HALFWAY = 0.85;
 /// Seeds of the confirming rollouts: another stream than the ranking's.
 constexpr unsigned CONFIRMATION_SEED_OFFSET = 1000003u;
 /// The chosen shot's probability is confirmed with up to this many times the request's rollouts, as far as the
@@ -158,18 +161,51 @@ std::vector<PlannedShot> rankByRollouts(const std::vector<RefinedShot>& refined,
   return shots;
 }
 
-/// The chosen shot's probability from rollouts of its own: the highest of several noisy estimates is biased upwards
-/// (the winner's curse), an estimate from other draws is not. Kept only when some were played in time.
-void confirm(PlannedShot& best, const PlanContext& context, int& evaluations)
+/// Plays `rollouts` in batches until they are done or `until` has passed (the last batch may end past it, by the
+/// deadline at the latest: a batch cut short ends the shot's rollouts).
+void playUntil(NoisyRollouts& rollouts, const PlanContext& context, Clock::time_point until)
 {
-  NoisyRollouts rollouts(best.stroke, best.target, best.pocket, context.request.seed + CONFIRMATION_SEED_OFFSET,
-                         CONFIRMATION_FACTOR * context.request.rollouts, context);
   const int threads = threadCount(context.request);
-  while (!rollouts.finished() && !context.pastDeadline())
+  while (!rollouts.finished() && !context.shouldStop(until))
     rollouts.play(ROLLOUT_BATCH, threads, context.deadline);
-  evaluations += rollouts.estimate().trials;
-  if (rollouts.estimate().trials > 0)
-    setEstimate(best, rollouts);
+}
+
+NoisyRollouts confirmingRollouts(const PlannedShot& shot, unsigned stream, const PlanContext& context)
+{
+  return NoisyRollouts(shot.stroke, shot.target, shot.pocket, context.request.seed + CONFIRMATION_SEED_OFFSET + stream,
+                       CONFIRMATION_FACTOR * context.request.rollouts, context);
+}
+
+/// The chosen shot's probability from rollouts of its own: the highest of several noisy estimates is biased upwards
+/// (the winner's curse), an estimate from other draws is not. When the leader's confirmed estimate falls below the
+/// runner-up's ranking estimate by `halfway`, the runner-up is confirmed too in the time left, and the better of the
+/// two confirmed shots leads. An estimate is kept only when some rollouts were played in time.
+void confirm(std::vector<PlannedShot>& ranked, const PlanContext& context, Clock::time_point halfway, int& evaluations)
+{
+  NoisyRollouts leader = confirmingRollouts(ranked[0], 0, context);
+  playUntil(leader, context, halfway);
+  if (leader.estimate().trials > 0 && leader.estimate().probability() < ranked[1].success_probability)
+  {
+    NoisyRollouts runner_up = confirmingRollouts(ranked[1], 1, context);
+    playUntil(runner_up, context, context.deadline);
+    evaluations += runner_up.estimate().trials;
+    if (runner_up.estimate().trials > 0)
+    {
+      setEstimate(ranked[1], runner_up);
+      if (runner_up.estimate().probability() > leader.estimate().probability())
+      {
+        setEstimate(ranked[0], leader);
+        evaluations += leader.estimate().trials;
+        std::swap(ranked[0], ranked[1]);
+        return;
+      }
+    }
+  }
+  else
+    playUntil(leader, context, context.deadline);
+  evaluations += leader.estimate().trials;
+  if (leader.estimate().trials > 0)
+    setEstimate(ranked[0], leader);
 }
 
 std::string noPotExplanation(const CandidateSearch& search, const std::vector<RefinedShot>& refined)
@@ -236,9 +272,9 @@ Expected<ShotPlan> planShot(const PlanRequest& request, const ShotConfiguration&
   plan.found = !ranked.empty();
   if (plan.found)
   {
-    plan.best = ranked.front();
     if (ranked.size() > 1)
-      confirm(plan.best, context, plan.evaluations);
+      confirm(ranked, context, after(start, CONFIRMATION_HALFWAY * request.budget), plan.evaluations);
+    plan.best = ranked.front();
     plan.alternatives.assign(ranked.begin() + 1, ranked.end());
   }
   else
