@@ -1,6 +1,7 @@
 #include "billiard_shot_planner/planning/shot_planner.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <thread>
 #include <utility>
 
@@ -176,6 +177,14 @@ NoisyRollouts confirmingRollouts(const PlannedShot& shot, unsigned stream, const
                        CONFIRMATION_FACTOR * context.request.rollouts, context);
 }
 
+/// Counts the rollouts played and, when any were, takes their estimate for `shot`.
+void keepEstimate(PlannedShot& shot, const NoisyRollouts& rollouts, int& evaluations)
+{
+  evaluations += rollouts.estimate().trials;
+  if (rollouts.estimate().trials > 0)
+    setEstimate(shot, rollouts);
+}
+
 /// The chosen shot's probability from rollouts of its own: the highest of several noisy estimates is biased upwards
 /// (the winner's curse), an estimate from other draws is not. When the leader's confirmed estimate falls below the
 /// runner-up's ranking estimate by `halfway`, the runner-up is confirmed too in the time left, and the better of the
@@ -184,28 +193,20 @@ void confirm(std::vector<PlannedShot>& ranked, const PlanContext& context, Clock
 {
   NoisyRollouts leader = confirmingRollouts(ranked[0], 0, context);
   playUntil(leader, context, halfway);
+  std::optional<NoisyRollouts> runner_up;
   if (leader.estimate().trials > 0 && leader.estimate().probability() < ranked[1].success_probability)
   {
-    NoisyRollouts runner_up = confirmingRollouts(ranked[1], 1, context);
-    playUntil(runner_up, context, context.deadline);
-    evaluations += runner_up.estimate().trials;
-    if (runner_up.estimate().trials > 0)
-    {
-      setEstimate(ranked[1], runner_up);
-      if (runner_up.estimate().probability() > leader.estimate().probability())
-      {
-        setEstimate(ranked[0], leader);
-        evaluations += leader.estimate().trials;
-        std::swap(ranked[0], ranked[1]);
-        return;
-      }
-    }
+    runner_up.emplace(confirmingRollouts(ranked[1], 1, context));
+    playUntil(*runner_up, context, context.deadline);
   }
   else
     playUntil(leader, context, context.deadline);
-  evaluations += leader.estimate().trials;
-  if (leader.estimate().trials > 0)
-    setEstimate(ranked[0], leader);
+  keepEstimate(ranked[0], leader, evaluations);
+  if (!runner_up)
+    return;
+  keepEstimate(ranked[1], *runner_up, evaluations);
+  if (runner_up->estimate().trials > 0 && runner_up->estimate().probability() > leader.estimate().probability())
+    std::swap(ranked[0], ranked[1]);
 }
 
 std::string noPotExplanation(const CandidateSearch& search, const std::vector<RefinedShot>& refined)
