@@ -94,7 +94,7 @@ enum class Watch
   Reactivation,      ///< inactive: the bodies approach again
 };
 
-/// The event function of `watch` for contact `i` (the event happens where it becomes ≤ 0) and its rate.
+/// The event function of `watch` for contact `i` (the event happens where it becomes ≤ 0).
 inline Real guard(const Phase& p, const State& z, int i, Watch watch)
 {
   switch (watch)
@@ -110,20 +110,10 @@ inline Real guard(const Phase& p, const State& z, int i, Watch watch)
   return -p.approach(z, i);
 }
 
+/// Its rate: every guard is linear in the state, so its rate is the guard of the state's rate.
 inline Real guardRate(const Phase& p, const State& z, int i, Watch watch)
 {
-  const State dz = p.rate(z);
-  switch (watch)
-  {
-    case Watch::EndOfCompression:
-      return p.approach(dz, i);
-    case Watch::Separation:
-      return dz[static_cast<std::size_t>(i)];
-    case Watch::Restart:
-    case Watch::Reactivation:
-      break;
-  }
-  return -p.approach(dz, i);
+  return guard(p, p.rate(z), i, watch);
 }
 
 inline std::vector<Watch> watches(const Contact& c)
@@ -135,38 +125,37 @@ inline std::vector<Watch> watches(const Contact& c)
   return {Watch::Separation, Watch::Restart};
 }
 
-/// The first τ in (0, h] where the guard is ≤ 0, if any: a sign change over the step, or an extremum inside it
-/// that reaches 0. Located by bisection; the τ returned lies just past the crossing.
-inline bool firstCrossing(const Phase& p, const State& z0, Real h, int i, Watch watch, Real& tau)
+/// The end of [lo, hi] where `holds` turns false, by bisection to the precision of Real (`holds` is true at lo
+/// and false at hi).
+template <typename Holds>
+Real bisect(Real lo, Real hi, Holds holds)
 {
-  const State z1 = p.advance(z0, h);
-  Real hit = h;
-  if (guard(p, z1, i, watch) > 0)
-  {
-    const Real r0 = guardRate(p, z0, i, watch), r1 = guardRate(p, z1, i, watch);
-    if (!(r0 < 0 && r1 > 0))
-      return false;
-    Real lo = 0, hi = h;  // the minimum: where the rate turns positive
-    for (int k = 0; k < 200 && hi - lo > 0; ++k)
-    {
-      const Real mid = lo + (hi - lo) / 2;
-      if (mid <= lo || mid >= hi)
-        break;
-      (guardRate(p, p.advance(z0, mid), i, watch) < 0 ? lo : hi) = mid;
-    }
-    if (guard(p, p.advance(z0, hi), i, watch) > 0)
-      return false;
-    hit = hi;
-  }
-  Real lo = 0, hi = hit;
   for (int k = 0; k < 200; ++k)
   {
     const Real mid = lo + (hi - lo) / 2;
     if (mid <= lo || mid >= hi)
       break;
-    (guard(p, p.advance(z0, mid), i, watch) > 0 ? lo : hi) = mid;
+    (holds(mid) ? lo : hi) = mid;
   }
-  tau = hi;
+  return hi;
+}
+
+/// The first τ in (0, h] where the guard is ≤ 0, if any: a sign change over the step, or an extremum inside it
+/// that reaches 0. Located by bisection; the τ returned lies just past the crossing.
+inline bool firstCrossing(const Phase& p, const State& z0, Real h, int i, Watch watch, Real& tau)
+{
+  const auto guard_at = [&](Real t) { return guard(p, p.advance(z0, t), i, watch); };
+  Real hit = h;
+  if (guard_at(h) > 0)
+  {
+    if (!(guardRate(p, z0, i, watch) < 0 && guardRate(p, p.advance(z0, h), i, watch) > 0))
+      return false;
+    // The minimum: where the rate turns positive.
+    hit = bisect(0, h, [&](Real t) { return guardRate(p, p.advance(z0, t), i, watch) < 0; });
+    if (guard_at(hit) > 0)
+      return false;
+  }
+  tau = bisect(0, hit, [&](Real t) { return guard_at(t) > 0; });
   return true;
 }
 
@@ -243,15 +232,17 @@ inline BallBallTableOutcome solve(const BallBallTableCollision& c, int max_phase
   constexpr int CHATTER_ENDS = 5;
   BallBallTableOutcome out;
   out.states.push_back(stateName(p.contacts));
-  out.v1 = c.v0;
-  for (int phase = 0; phase < max_phases && !out.finished; ++phase)
+  const auto take_velocities = [&]
+  {
+    out.v1 = z[2] / p.sm1;
+    out.v2 = z[3] / p.sm2;
+  };
+  for (int phase = 0; phase < max_phases; ++phase)
   {
     const bool none = !p.contacts[0].active && !p.contacts[1].active;
     if (none && p.approach(z, 0) <= 0 && p.approach(z, 1) <= 0)
     {
       out.finished = true;
-      out.v1 = z[2] / p.sm1;
-      out.v2 = z[3] / p.sm2;
       break;
     }
     for (int i = 0; i < 2 && !out.finished; ++i)
@@ -269,13 +260,12 @@ inline BallBallTableOutcome solve(const BallBallTableCollision& c, int max_phase
       }
       else if (p.approach(z, j) <= 0)
       {
-        out.v1 = z[2] / p.sm1;
-        out.v2 = z[3] / p.sm2;
+        take_velocities();
         out.finished = out.chatter_limit = true;
       }
     }
     if (out.finished)
-      break;
+      return out;
     const Real h = p.norm() > 0 ? Real(0.2) / p.norm() : 1;  // none active: the velocities are constant
     bool found = false;
     for (int step = 0; step < 1000000 && !found; ++step)
@@ -315,6 +305,7 @@ inline BallBallTableOutcome solve(const BallBallTableCollision& c, int max_phase
     if (name != out.states.back())
       out.states.push_back(name);
   }
+  take_velocities();
   return out;
 }
 
