@@ -3,13 +3,14 @@
 #include <Eigen/Core>
 #include <optional>
 
+#include "billiard_shot_planner/scenarios/ball_collision.hpp"
+
 namespace billiard_shot_planner
 {
 namespace detail
 {
-/// Gap (m) within which two balls touch: far above the round-off of a gap after an event (1e-16 m for positions of
-/// a few metres), far below anything the cloth or the collision model resolves.
-constexpr double BALL_TOUCHING_TOLERANCE = 1e-9;
+/// Gap (m) within which two balls touch: the one gap of every impact (scenarios/ball_collision.hpp).
+constexpr double BALL_TOUCHING_TOLERANCE = TOUCHING_GAP;
 
 /// The gap |d(t)| − contact_distance (m) between two balls at time t of a phase in which both accelerate constantly:
 /// d(t) = dp + dv t + ½ da t² is the position of one ball's centre relative to the other's, contact_distance the sum

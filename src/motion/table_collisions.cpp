@@ -13,15 +13,7 @@ namespace
 BallCollision collisionOf(const std::vector<BallState>& touching, const BallProperties& ball, const Table& table,
                           const BallContactSettings& contact)
 {
-  BallCollision collision;
-  collision.ball_mass = ball.mass;
-  collision.ball_radius = ball.radius;
-  collision.ball_ball = contact.ball_ball;
-  collision.friction_model = contact.friction_model;
-  collision.cloth = table.cloth;
-  collision.stiffness_ratio = contact.stiffness_ratio;
-  collision.cushion = table.cushion;
-  collision.cushion_stiffness_ratio = table.cushion_stiffness_ratio;
+  BallCollision collision = collisionSettings(ball, table, contact);
   for (std::size_t i = 0; i < touching.size(); ++i)
   {
     const BallState& state = touching[i];
@@ -33,6 +25,20 @@ BallCollision collisionOf(const std::vector<BallState>& touching, const BallProp
   return collision;
 }
 }  // namespace
+
+BallCollision collisionSettings(const BallProperties& ball, const Table& table, const BallContactSettings& contact)
+{
+  BallCollision collision;
+  collision.ball_mass = ball.mass;
+  collision.ball_radius = ball.radius;
+  collision.ball_ball = contact.ball_ball;
+  collision.friction_model = contact.friction_model;
+  collision.cloth = table.cloth;
+  collision.stiffness_ratio = contact.stiffness_ratio;
+  collision.cushion = table.cushion;
+  collision.cushion_stiffness_ratio = table.cushion_stiffness_ratio;
+  return collision;
+}
 
 Expected<std::vector<BallState>> resolveBallImpact(const std::vector<BallState>& touching, const BallProperties& ball,
                                                    const Table& table, const BallContactSettings& contact,

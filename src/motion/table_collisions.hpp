@@ -9,6 +9,9 @@ namespace billiard_shot_planner
 {
 namespace detail
 {
+/// A collision with no balls yet: the balls' mass and radius, the ball–ball contact, the table's cloth and cushion.
+BallCollision collisionSettings(const BallProperties& ball, const Table& table, const BallContactSettings& contact);
+
 /// The states right after the multiple impact of balls that touch (each with its cloth contact and the cushions it
 /// touches), by the ball-collision scenario: one engine problem for the whole cluster.
 Expected<std::vector<BallState>> resolveBallImpact(const std::vector<BallState>& touching, const BallProperties& ball,

@@ -4,14 +4,15 @@
 #include <vector>
 
 #include "billiard_shot_planner/motion/ball_motion.hpp"
+#include "billiard_shot_planner/scenarios/ball_collision.hpp"
 
 namespace billiard_shot_planner
 {
 namespace detail
 {
-/// Distance (m) within which the ball touches a cushion nose: the tolerance of a start position against the
-/// cushions, far above the round-off of a position after a cushion hit (1e-16 m).
-constexpr double CONTACT_DISTANCE = 1e-9;
+/// Distance (m) within which the ball touches a cushion nose: the one gap of every impact
+/// (scenarios/ball_collision.hpp), also the tolerance of a start position against the cushions.
+constexpr double CONTACT_DISTANCE = TOUCHING_GAP;
 
 /// Unit normal of the cushion contact (from the nose towards the ball's centre) for cushion `rail` (0: −x, 1: +x,
 /// 2: −y, 3: +y), with the ball's centre at `centre` (table frame) touching the nose.

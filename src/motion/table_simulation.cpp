@@ -72,6 +72,11 @@ std::string firstContact(const TableTrajectory& trajectory, std::size_t ball)
   return "";
 }
 
+Status validateTableBalls(const std::vector<TableBall>& balls, const BallProperties& ball, const Table& table)
+{
+  return detail::checkBalls(balls, ball, table);
+}
+
 Expected<TableTrajectory> simulateTable(const std::vector<TableBall>& balls, const BallProperties& ball,
                                         const Table& table, const MotionParameters& parameters,
                                         const BallContactSettings& contact)

@@ -14,9 +14,9 @@ std::string ballField(std::size_t i, const char* field)
   return "balls[" + std::to_string(i) + "]." + field;
 }
 
-std::string ballName(std::size_t i)
+std::string ballName(const BallCollision& c, std::size_t i)
 {
-  return "ball" + std::to_string(i);
+  return c.balls[i].id.empty() ? "ball" + std::to_string(i) : c.balls[i].id;
 }
 
 Eigen::Vector3d centre(const BallCollision& c, std::size_t i)
@@ -103,7 +103,7 @@ Contact pairContact(const BallCollision& c, const TouchingPair& pair, Eigen::Ind
   rows.block<3, 6>(0, 6 * static_cast<Eigen::Index>(pair.b)) = rows_b;
   SurfaceContact surface = c.ball_ball;
   surface.friction = pair.friction;
-  const std::string name = ballName(pair.b) + "-" + ballName(pair.a);
+  const std::string name = ballName(c, pair.b) + "-" + ballName(c, pair.a);
   return makeContact(name.c_str(), rows, contactLaw(surface, 1.0));
 }
 
@@ -111,7 +111,7 @@ Contact clothContact(const BallCollision& c, std::size_t ball, Eigen::Index coor
 {
   Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(3, coordinates);
   rows.block<3, 6>(0, 6 * static_cast<Eigen::Index>(ball)) = clothContactRows(c.ball_radius);
-  const std::string name = ballName(ball) + "-cloth";
+  const std::string name = ballName(c, ball) + "-cloth";
   return makeContact(name.c_str(), rows, contactLaw(c.cloth, c.stiffness_ratio));
 }
 
@@ -122,7 +122,7 @@ Contact cushionContact(const BallCollision& c, const CushionTouch& touch, Eigen:
   Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(3, coordinates);
   rows.block<3, 6>(0, 6 * static_cast<Eigen::Index>(touch.ball)) =
       pointVelocityRows(contactFrame(normal), -c.ball_radius * normal);
-  const std::string name = ballName(touch.ball) + "-cushion";
+  const std::string name = ballName(c, touch.ball) + "-" + touch.id;
   return makeContact(name.c_str(), rows, contactLaw(c.cushion, c.stiffness_ratio * c.cushion_stiffness_ratio));
 }
 
@@ -150,33 +150,38 @@ bool anyContactApproaches(const ImpactProblem& problem)
   return false;
 }
 
-struct Configuration
+/// The bodies and their contacts, nothing checked but the fields.
+BallCollisionBodies assembleBodies(const BallCollision& c)
 {
-  ImpactProblem problem;
-  std::vector<TouchingPair> pairs;
-};
+  BallCollisionBodies bodies{ballsProblem(c), touchingPairs(c), {}};
+  ImpactProblem& problem = bodies.problem;
+  const Eigen::Index coordinates = problem.velocity.size();
+  for (const TouchingPair& pair : bodies.pairs)
+    problem.contacts.push_back(pairContact(c, pair, coordinates));
+  for (std::size_t i = 0; i < c.balls.size(); ++i)
+  {
+    const bool on_cloth = onCloth(c, i);
+    bodies.cloth_contacts.push_back(on_cloth ? problem.contacts.size() : BallCollisionResult::NO_CLOTH_CONTACT);
+    if (on_cloth)
+      problem.contacts.push_back(clothContact(c, i, coordinates));
+  }
+  for (const CushionTouch& touch : c.cushions)
+    problem.contacts.push_back(cushionContact(c, touch, coordinates));
+  return bodies;
+}
 
-Expected<Configuration> configure(const BallCollision& c)
+Expected<BallCollisionBodies> configure(const BallCollision& c)
 {
   if (Status status = validate(c); !status)
     return status.error();
-  Configuration configuration{ballsProblem(c), touchingPairs(c)};
-  if (configuration.pairs.empty())
+  BallCollisionBodies bodies = assembleBodies(c);
+  if (bodies.pairs.empty())
     return Error{ErrorCode::NoApproachingContact, "balls",
                  "no two balls touch (centres within 2 ball_radius + touching_tolerance): there is no collision"};
-  ImpactProblem& problem = configuration.problem;
-  const Eigen::Index coordinates = problem.velocity.size();
-  for (const TouchingPair& pair : configuration.pairs)
-    problem.contacts.push_back(pairContact(c, pair, coordinates));
-  for (std::size_t i = 0; i < c.balls.size(); ++i)
-    if (onCloth(c, i))
-      problem.contacts.push_back(clothContact(c, i, coordinates));
-  for (const CushionTouch& touch : c.cushions)
-    problem.contacts.push_back(cushionContact(c, touch, coordinates));
-  if (!anyContactApproaches(problem))
+  if (!anyContactApproaches(bodies.problem))
     return Error{ErrorCode::NoApproachingContact, "balls",
                  "no touching pair approaches and no ball moves into the cloth or a cushion: there is no collision"};
-  return configuration;
+  return bodies;
 }
 }  // namespace
 
@@ -217,6 +222,13 @@ std::vector<TouchingPair> touchingPairs(const BallCollision& c)
   return pairs;
 }
 
+Expected<BallCollisionBodies> collisionBodies(const BallCollision& collision)
+{
+  if (Status status = validate(collision); !status)
+    return status.error();
+  return assembleBodies(collision);
+}
+
 Expected<ImpactProblem> makeImpactProblem(const BallCollision& collision)
 {
   auto configuration = configure(collision);
@@ -238,10 +250,7 @@ Expected<BallCollisionResult> solve(const BallCollision& collision, const Solver
   result.pairs = configuration.value().pairs;
   for (const Contact& contact : configuration.value().problem.contacts)
     result.contact_names.push_back(contact.name);
-  std::size_t next_cloth_contact = result.pairs.size();
-  for (std::size_t i = 0; i < collision.balls.size(); ++i)
-    result.cloth_contacts.push_back(onCloth(collision, i) ? next_cloth_contact++
-                                                          : BallCollisionResult::NO_CLOTH_CONTACT);
+  result.cloth_contacts = configuration.value().cloth_contacts;
   for (std::size_t i = 0; i < collision.balls.size(); ++i)
   {
     const auto at = static_cast<Eigen::Index>(6 * i);

@@ -51,6 +51,9 @@ struct BallContactSettings
   double stiffness_ratio = BallCollision{}.stiffness_ratio;  ///< k_cloth / k_ball_ball
 };
 
+/// Checks the balls as simulateTable does: their count, ids, starts and overlaps (errors named as its).
+Status validateTableBalls(const std::vector<TableBall>& balls, const BallProperties& ball, const Table& table);
+
 /// Simulates every ball on the table from its start until every ball rests or has left the table (or a ball meets
 /// the time or event limit). One event queue for all balls: each ball moves in its closed-form phases; the next
 /// event is the earliest of any ball's own event (phase change, landing, cushion, pocket) and of any pair's contact

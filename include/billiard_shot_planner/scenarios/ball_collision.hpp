@@ -13,6 +13,11 @@
 
 namespace billiard_shot_planner
 {
+/// The gap (m) within which two bodies touch — two balls, or a ball and a cushion's nose — for every impact: the
+/// strike, the balls' collisions and the motion's events (docs/impact_model.md, Touching bodies). A touching ball
+/// takes part in the impact that reaches its neighbour; a ball farther away is met later, by its own event.
+constexpr double TOUCHING_GAP = 1e-9;
+
 /// A ball as it enters a collision: on the cloth (its centre at height R), or above it (a hop) at `height`.
 struct CollidingBall
 {
@@ -22,6 +27,8 @@ struct CollidingBall
   /// m, ≥ 0: the centre's height above R. A ball higher than the touching tolerance is in the air: it has no cloth
   /// contact in the impact.
   double height = 0.0;
+  /// The name its contacts carry ("one-cloth", "cue-one"); empty: "ball" and its index ("ball2-cloth").
+  std::string id{};
 };
 
 /// A ball that touches a cushion nose as the impact starts: the cushion is one more contact of the same impact (a
@@ -30,6 +37,7 @@ struct CushionTouch
 {
   std::size_t ball = 0;                               ///< index into BallCollision::balls
   Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  ///< from the nose to the ball's centre (normalised here)
+  std::string id = "cushion";                         ///< the name its contact carries ("ball0-cushion")
 };
 
 /// How the ball–ball friction coefficient of each touching pair is chosen.
@@ -77,6 +85,7 @@ struct BallCollision
   double cushion_stiffness_ratio = 1.0;  ///< k_cushion / k_cloth
   /// Centres within 2R + this are touching, m; closer than 2R − this is an overlap and refused. A micrometre:
   /// far above the round-off of positions in metres and far below what a ball's motion covers during an impact.
+  /// (The table's motion and the strike use TOUCHING_GAP; making the two one gap is open work.)
   double touching_tolerance = 1e-6;
 };
 
@@ -131,6 +140,19 @@ std::vector<TouchingPair> touchingPairs(const BallCollision& collision);
 /// Fails with NoApproachingContact (field "balls") when no two balls touch, or when nothing approaches (a touching
 /// cushion alone is no ball collision: the ball's own motion meets it).
 Expected<ImpactProblem> makeImpactProblem(const BallCollision& collision);
+
+/// The bodies of a collision and their contacts, in makeImpactProblem's order and with stiffnesses relative to the
+/// ball–ball contact's, whether or not anything approaches or any two balls touch: part of a larger impact (the cue
+/// strike of a ball that touches others, scenarios/cluster_strike.hpp).
+struct BallCollisionBodies
+{
+  ImpactProblem problem;
+  std::vector<TouchingPair> pairs;
+  std::vector<std::size_t> cloth_contacts;  ///< as BallCollisionResult::cloth_contacts
+};
+
+/// Errors as validate().
+Expected<BallCollisionBodies> collisionBodies(const BallCollision& collision);
 
 Expected<BallCollisionResult> solve(const BallCollision& collision, const SolverOptions& options = {});
 

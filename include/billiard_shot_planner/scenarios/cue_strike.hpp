@@ -50,6 +50,24 @@ struct CueStrike
 Expected<Eigen::Vector3d> hitNormal(const Eigen::Vector3d& axis_point, const Eigen::Vector3d& direction,
                                     const Eigen::Vector3d& ball_centre, double ball_radius);
 
+/// One contact of a strike's impact, for reports: its name and its total impulse on its body A, in the table frame.
+/// A lone strike's are "cue-ball" (A the tip: the impulse on the cue) and "ball-table" (A the ball); a strike of a ball
+/// that touches others names the bodies ("tip-cue", "cue-one", "one-cloth", "cue-cushion1"; A the tip, then the
+/// second ball named, then the ball).
+struct StrikeContact
+{
+  std::string name;
+  Eigen::Vector3d impulse;  ///< N·s
+};
+
+/// A ball the strike moved besides the struck one: a ball it touches, directly or through others.
+struct StruckBall
+{
+  std::size_t ball = 0;  ///< index, as the caller numbers the balls
+  Eigen::Vector3d velocity;
+  Eigen::Vector3d angular_velocity;
+};
+
 struct CueStrikeResult
 {
   Eigen::Vector3d velocity;          ///< ball, m/s
@@ -60,12 +78,18 @@ struct CueStrikeResult
   Eigen::Vector3d impulse_table;     ///< impulse on the ball at the table contact (N·s)
   Eigen::Vector3d hit_normal;        ///< n̂ used (normalised)
   Eigen::Vector3d cue_direction;     ///< ĉ used (normalised)
-  std::vector<std::string> states;   ///< S1 (both), S2 (ball–table only), S3 (cue–ball only), S4 (end)
+  /// A lone strike's: S1 (both), S2 (ball–table only), S3 (cue–ball only), S4 (end). A strike of a ball that
+  /// touches others: each state's active contacts by name, joined by '+' ("tip-cue+cue-one+cue-cloth"), "end" last.
+  std::vector<std::string> states;
   /// The tip slipped on the ball from the first instant (|v_t| > μη²|v_n|): a miscue warning.
   bool miscue = false;
   /// The ball leaves the cloth upwards (a jump, a massé or a scoop): its motion starts airborne.
   bool leaves_cloth = false;
-  ImpactResult impact;  ///< the engine's full result: contact 0 is cue–ball, contact 1 is ball–table
+  /// Every contact of the impact, in the engine's order: contact 0 is the cue's; in a lone strike contact 1 is the
+  /// ball–table contact.
+  std::vector<StrikeContact> contacts;
+  std::vector<StruckBall> other_balls;  ///< empty for a lone strike
+  ImpactResult impact;                  ///< the engine's full result, contacts as `contacts`
 };
 
 /// The engine's configuration for this strike: generalised velocity (v_c, [v_⊥1, v_⊥2,] v, ω) — the tip along ĉ,

@@ -1,0 +1,100 @@
+#include "billiard_shot_planner/motion/table_strike.hpp"
+
+#include <algorithm>
+
+#include "table_collisions.hpp"
+#include "table_events.hpp"
+
+namespace billiard_shot_planner
+{
+namespace
+{
+double gapBetween(const TableBall& a, const TableBall& b, double radius)
+{
+  return (a.state.position.head<2>() - b.state.position.head<2>()).norm() - 2.0 * radius;
+}
+
+void addBall(StrikeBodies& s, const TableBall& ball, std::size_t index, int touches, const BallProperties& properties,
+             const Table& table)
+{
+  s.members.push_back(index);
+  s.touches.push_back(touches);
+  const std::size_t k = s.bodies.balls.size();
+  s.bodies.balls.push_back(
+      {ball.state.position.head<2>(), ball.state.velocity, ball.state.angular_velocity, 0.0, ball.id});
+  const Eigen::Vector3d centre(ball.state.position.x(), ball.state.position.y(), properties.radius);
+  for (int rail : detail::touchedCushions(centre, table, properties.radius))
+    s.bodies.cushions.push_back({k, detail::cushionNormal(rail, table, centre), "cushion" + std::to_string(rail)});
+}
+}  // namespace
+
+StrikeBodies strikeBodies(const std::vector<TableBall>& balls, std::size_t struck, const BallProperties& ball,
+                          const Table& table, const BallContactSettings& contact)
+{
+  StrikeBodies s{detail::collisionSettings(ball, table, contact), {}, {}};
+  s.bodies.touching_tolerance = TOUCHING_GAP;
+  addBall(s, balls[struck], struck, -1, ball, table);
+  // Breadth first: every ball within the gap of a member joins, touching that member.
+  for (std::size_t k = 0; k < s.members.size(); ++k)
+    for (std::size_t m = 0; m < balls.size(); ++m)
+      if (std::find(s.members.begin(), s.members.end(), m) == s.members.end() &&
+          gapBetween(balls[s.members[k]], balls[m], ball.radius) <= TOUCHING_GAP)
+      {
+        if (s.touches[k] < 0)
+          s.touches[k] = static_cast<int>(s.members.size());
+        addBall(s, balls[m], m, static_cast<int>(k), ball, table);
+      }
+  return s;
+}
+
+Expected<CueStrikeResult> strikeOnTable(const CueStrike& strike, const std::vector<TableBall>& balls,
+                                        std::size_t struck, const Table& table, const BallContactSettings& contact,
+                                        const SolverOptions& options)
+{
+  const BallProperties ball{strike.ball_mass, strike.ball_radius};
+  if (Status status = validateTableBalls(balls, ball, table); !status)
+    return status.error();
+  if (struck >= balls.size())
+    return invalidArgument("cue_ball", "names no ball: there are " + std::to_string(balls.size()));
+  const StrikeBodies bodies = strikeBodies(balls, struck, ball, table, contact);
+  if (bodies.lone())
+    return solve(strike, options);
+  ClusterStrike cluster{strike, bodies.bodies, 0};
+  auto solved = solve(cluster, options);
+  if (!solved)
+    return solved.error();
+  for (StruckBall& other : solved.value().other_balls)
+    other.ball = bodies.members[other.ball];
+  return solved;
+}
+
+std::vector<TableBall> ballsAfterStrike(std::vector<TableBall> balls, std::size_t struck, const CueStrikeResult& strike)
+{
+  balls[struck].state.velocity = strike.velocity;
+  balls[struck].state.angular_velocity = strike.angular_velocity;
+  for (const StruckBall& other : strike.other_balls)
+  {
+    balls[other.ball].state.velocity = other.velocity;
+    balls[other.ball].state.angular_velocity = other.angular_velocity;
+  }
+  return balls;
+}
+
+void recordStrike(TableTrajectory& trajectory, const StrikeBodies& bodies)
+{
+  if (bodies.members.size() < 2)
+    return;
+  BallImpactRecord record{0.0, {}};
+  for (std::size_t k = 0; k < bodies.members.size(); ++k)
+  {
+    record.balls.push_back(static_cast<int>(bodies.members[k]));
+    std::vector<MotionEvent>& events = trajectory.balls[bodies.members[k]].events;
+    MotionEvent met = events.front();
+    met.type = MotionEventType::BallCollision;
+    met.ball = static_cast<int>(bodies.members[static_cast<std::size_t>(bodies.touches[k])]);
+    events.insert(events.begin() + 1, met);
+  }
+  trajectory.ball_impacts.insert(trajectory.ball_impacts.begin(), record);
+}
+
+}  // namespace billiard_shot_planner
