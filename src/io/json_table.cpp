@@ -4,6 +4,7 @@
 #include <string>
 
 #include "billiard_shot_planner/motion/table_simulation.hpp"
+#include "billiard_shot_planner/motion/table_strike.hpp"
 #include "json_fields.hpp"
 #include "json_table.hpp"
 
@@ -157,16 +158,15 @@ Expected<json> solveTableShot(const json& request, const SolverOptions& options)
   auto samples = wantsSamples(request);
   if (!samples)
     return samples.error();
-  auto solved = solve(s, options);
+  const MotionSetup& m = setup.value().motion;
+  auto solved = strikeOnTable(s, balls.value(), cue.value(), m.table, contact.value(), options);
   if (!solved)
     return solved.error();
-  std::vector<TableBall> start = balls.value();
-  start[cue.value()].state.velocity = solved.value().velocity;
-  start[cue.value()].state.angular_velocity = solved.value().angular_velocity;
-  const MotionSetup& m = setup.value().motion;
+  const std::vector<TableBall> start = ballsAfterStrike(balls.value(), cue.value(), solved.value());
   auto run = simulateTable(start, m.ball, m.table, m.parameters, contact.value());
   if (!run)
     return run.error();
+  recordStrike(run.value(), strikeBodies(balls.value(), cue.value(), m.ball, m.table, contact.value()));
   json answer = tableJson(run.value(), cue.value(), m, samples.value());
   answer["strike"] = cueStrikeJson(solved.value());
   return answer;
