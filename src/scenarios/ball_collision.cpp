@@ -14,11 +14,6 @@ std::string ballField(std::size_t i, const char* field)
   return "balls[" + std::to_string(i) + "]." + field;
 }
 
-std::string ballName(const BallCollision& c, std::size_t i)
-{
-  return c.balls[i].id.empty() ? "ball" + std::to_string(i) : c.balls[i].id;
-}
-
 Eigen::Vector3d centre(const BallCollision& c, std::size_t i)
 {
   return {c.balls[i].position.x(), c.balls[i].position.y(), c.ball_radius + c.balls[i].height};
@@ -184,6 +179,11 @@ Expected<BallCollisionBodies> configure(const BallCollision& c)
   return bodies;
 }
 }  // namespace
+
+std::string ballName(const BallCollision& c, std::size_t i)
+{
+  return c.balls[i].id.empty() ? "ball" + std::to_string(i) : c.balls[i].id;
+}
 
 Status validate(const BallCollision& c)
 {

@@ -29,11 +29,6 @@ Status check(const ClusterStrike& c)
   return {};
 }
 
-std::string struckName(const BallCollision& bodies, std::size_t struck)
-{
-  return bodies.balls[struck].id.empty() ? "ball" + std::to_string(struck) : bodies.balls[struck].id;
-}
-
 /// The bodies' problem behind the tip's coordinates, its stiffnesses rescaled to the cue contact's unit.
 ImpactProblem withTip(const ClusterStrike& c, const BallCollision& bodies, const ImpactProblem& balls)
 {
@@ -45,7 +40,7 @@ ImpactProblem withTip(const ClusterStrike& c, const BallCollision& bodies, const
   problem.velocity = Eigen::VectorXd::Zero(dofs);
   problem.velocity.tail(dofs - tip) = balls.velocity;
   detail::setTip(c.strike, problem.mass_matrix, problem.velocity);
-  const std::string name = "tip-" + struckName(bodies, c.struck);
+  const std::string name = "tip-" + ballName(bodies, c.struck);
   problem.contacts.push_back(
       detail::cueContact(c.strike, name.c_str(), tip + 6 * static_cast<Eigen::Index>(c.struck), dofs));
   // The bodies' stiffnesses are relative to the ball–ball contact's: k_bb/k_cue = (k_cloth/k_cue)/(k_cloth/k_bb).

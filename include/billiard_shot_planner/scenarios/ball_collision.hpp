@@ -128,6 +128,9 @@ struct BallCollisionResult
   }
 };
 
+/// The name ball i's contacts carry: its id, or "ball" and its index.
+std::string ballName(const BallCollision& collision, std::size_t i);
+
 /// Checks the fields (the error names one: "balls[3].position", "ball_ball.eta2"), refusing fewer than two balls
 /// and overlaps beyond the tolerance.
 Status validate(const BallCollision& collision);
