@@ -52,10 +52,13 @@ Expected<std::vector<std::size_t>> trackedBalls(const ObservedShot& shot, const 
 }
 
 /// Whether the strike (strikeBall) reads the named parameter: the cue, the ball, the cloth and the solver do; the
-/// motion on the table and the cushions do not.
-bool strikeReads(const std::string& name)
+/// motion on the table does not, nor do the cushions and the table's size unless the struck ball touches a ball or
+/// a cushion (a lone strike has only the cue's and the cloth's contacts).
+bool strikeReads(const std::string& name, const CueStrikeResult& strike)
 {
   const auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
+  if (strike.contacts.size() > 2)
+    return !starts("motion.");
   return starts("table.cloth.") || !(starts("motion.") || starts("table."));
 }
 
@@ -131,7 +134,6 @@ Expected<TrackFit> fitTracks(const ShotConfiguration& configuration, const std::
     }
     strikes.push_back(predicted->strike);
   }
-  const bool strikes_change = std::any_of(names.begin(), names.end(), strikeReads);
   if (residual_count < static_cast<int>(parameters.size()))
     return invalidArgument("shots", std::to_string(residual_count / 2) + " track points cannot fit " +
                                         std::to_string(parameters.size()) + " parameters");
@@ -144,7 +146,9 @@ Expected<TrackFit> fitTracks(const ShotConfiguration& configuration, const std::
       count += 2 * static_cast<int>(entry.second.size());
     if (count == 0)
       continue;
-    const CueStrikeResult* struck = strikes_change ? nullptr : &strikes[k];
+    const bool strike_changes =
+        std::any_of(names.begin(), names.end(), [&](const std::string& name) { return strikeReads(name, strikes[k]); });
+    const CueStrikeResult* struck = strike_changes ? nullptr : &strikes[k];
     blocks.push_back({count, [&, k, count, struck](const std::vector<double>& values, Eigen::VectorXd& out)
                       {
                         ShotConfiguration changed = configuration;

@@ -73,7 +73,10 @@ struct StrikeAnswer
   CueStrikeResult result;
 };
 Expected<StrikeAnswer> solveStrikeFromJson(const json& request, const SolverOptions& options);
-json cueStrikeJson(const CueStrikeResult& result);
+/// The strike as JSON: the struck ball's state, the engine's record, every contact by name with its impulse
+/// ("contacts"), the other balls it moved ("other_balls") and the touching pairs ("touching"), balls named by `ids`
+/// (by index where none are given).
+json cueStrikeJson(const CueStrikeResult& result, const std::vector<std::string>& ids = {});
 
 }  // namespace json_io
 }  // namespace billiard_shot_planner

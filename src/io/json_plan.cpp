@@ -208,7 +208,7 @@ Expected<json> solvePlanShot(const json& request, const SolverOptions& options)
     TableTrajectory table = p.outcome.table;
     table.ids[0] = plan_request.value().cue_ball;  // the prediction calls the cue ball CUE_BALL_ID
     answer["outcome"] = tableJson(table, 0, MotionSetup{}, false);
-    answer["outcome"]["strike"] = cueStrikeJson(p.outcome.strike);
+    answer["outcome"]["strike"] = cueStrikeJson(p.outcome.strike, table.ids);
   }
   else
     answer["outcome"] = nullptr;

@@ -153,9 +153,26 @@ Expected<CueStrike> cueStrikeFromJson(const json& request)
   return strike;
 }
 
-json cueStrikeJson(const CueStrikeResult& r)
+namespace
 {
-  json out = commonResultJson(r.impact, {"cue-ball", "ball-table"});
+std::vector<std::string> contactNames(const CueStrikeResult& r)
+{
+  std::vector<std::string> names;
+  for (const StrikeContact& contact : r.contacts)
+    names.push_back(contact.name);
+  return names;
+}
+
+/// A ball of the table by its index, or the index itself where the caller gives no ids.
+json ballLabel(std::size_t ball, const std::vector<std::string>& ids)
+{
+  return ball < ids.size() ? json(ids[ball]) : json(ball);
+}
+}  // namespace
+
+json cueStrikeJson(const CueStrikeResult& r, const std::vector<std::string>& ids)
+{
+  json out = commonResultJson(r.impact, contactNames(r));
   out["v"] = toVector(r.velocity);
   out["omega"] = toVector(r.angular_velocity);
   out["cue_velocity"] = r.cue_velocity;
@@ -167,6 +184,18 @@ json cueStrikeJson(const CueStrikeResult& r)
   out["cue_direction"] = toVector(r.cue_direction);
   out["miscue"] = r.miscue;
   out["leaves_cloth"] = r.leaves_cloth;
+  json contacts = json::array(), moved = json::array(), touching = json::array();
+  for (const StrikeContact& contact : r.contacts)
+    contacts.push_back({{"name", contact.name}, {"impulse", toVector(contact.impulse)}});
+  for (const StruckBall& ball : r.other_balls)
+    moved.push_back({{"id", ballLabel(ball.ball, ids)},
+                     {"v", toVector(ball.velocity)},
+                     {"omega", toVector(ball.angular_velocity)}});
+  for (const TouchingBalls& pair : r.touching_balls)
+    touching.push_back({ballLabel(pair.first, ids), ballLabel(pair.second, ids)});
+  out["contacts"] = contacts;
+  out["other_balls"] = moved;
+  out["touching"] = touching;
   return out;
 }
 

@@ -166,9 +166,9 @@ Expected<json> solveTableShot(const json& request, const SolverOptions& options)
   auto run = simulateTable(start, m.ball, m.table, m.parameters, contact.value());
   if (!run)
     return run.error();
-  recordStrike(run.value(), strikeBodies(balls.value(), cue.value(), m.ball, m.table, contact.value()));
+  recordStrike(run.value(), cue.value(), solved.value());
   json answer = tableJson(run.value(), cue.value(), m, samples.value());
-  answer["strike"] = cueStrikeJson(solved.value());
+  answer["strike"] = cueStrikeJson(solved.value(), run.value().ids);
   return answer;
 }
 

@@ -14,11 +14,10 @@ double gapBetween(const TableBall& a, const TableBall& b, double radius)
   return (a.state.position.head<2>() - b.state.position.head<2>()).norm() - 2.0 * radius;
 }
 
-void addBall(StrikeBodies& s, const TableBall& ball, std::size_t index, int touches, const BallProperties& properties,
+void addBall(StrikeBodies& s, const TableBall& ball, std::size_t index, const BallProperties& properties,
              const Table& table)
 {
   s.members.push_back(index);
-  s.touches.push_back(touches);
   const std::size_t k = s.bodies.balls.size();
   s.bodies.balls.push_back(
       {ball.state.position.head<2>(), ball.state.velocity, ball.state.angular_velocity, 0.0, ball.id});
@@ -31,19 +30,15 @@ void addBall(StrikeBodies& s, const TableBall& ball, std::size_t index, int touc
 StrikeBodies strikeBodies(const std::vector<TableBall>& balls, std::size_t struck, const BallProperties& ball,
                           const Table& table, const BallContactSettings& contact)
 {
-  StrikeBodies s{detail::collisionSettings(ball, table, contact), {}, {}};
+  StrikeBodies s{detail::collisionSettings(ball, table, contact), {}};
   s.bodies.touching_tolerance = TOUCHING_GAP;
-  addBall(s, balls[struck], struck, -1, ball, table);
-  // Breadth first: every ball within the gap of a member joins, touching that member.
+  addBall(s, balls[struck], struck, ball, table);
+  // Breadth first: every ball within the gap of a member joins.
   for (std::size_t k = 0; k < s.members.size(); ++k)
     for (std::size_t m = 0; m < balls.size(); ++m)
       if (std::find(s.members.begin(), s.members.end(), m) == s.members.end() &&
           gapBetween(balls[s.members[k]], balls[m], ball.radius) <= TOUCHING_GAP)
-      {
-        if (s.touches[k] < 0)
-          s.touches[k] = static_cast<int>(s.members.size());
-        addBall(s, balls[m], m, static_cast<int>(k), ball, table);
-      }
+        addBall(s, balls[m], m, ball, table);
   return s;
 }
 
@@ -65,6 +60,9 @@ Expected<CueStrikeResult> strikeOnTable(const CueStrike& strike, const std::vect
     return solved.error();
   for (StruckBall& other : solved.value().other_balls)
     other.ball = bodies.members[other.ball];
+  for (TouchingBalls& pair : solved.value().touching_balls)
+    pair = {std::min(bodies.members[pair.first], bodies.members[pair.second]),
+            std::max(bodies.members[pair.first], bodies.members[pair.second])};
   return solved;
 }
 
@@ -80,18 +78,25 @@ std::vector<TableBall> ballsAfterStrike(std::vector<TableBall> balls, std::size_
   return balls;
 }
 
-void recordStrike(TableTrajectory& trajectory, const StrikeBodies& bodies)
+void recordStrike(TableTrajectory& trajectory, std::size_t struck, const CueStrikeResult& strike)
 {
-  if (bodies.members.size() < 2)
+  if (strike.touching_balls.empty())
     return;
-  BallImpactRecord record{0.0, {}};
-  for (std::size_t k = 0; k < bodies.members.size(); ++k)
+  BallImpactRecord record{0.0, {static_cast<int>(struck)}};
+  for (const StruckBall& other : strike.other_balls)
+    record.balls.push_back(static_cast<int>(other.ball));
+  for (int ball : record.balls)
   {
-    record.balls.push_back(static_cast<int>(bodies.members[k]));
-    std::vector<MotionEvent>& events = trajectory.balls[bodies.members[k]].events;
+    // The first pair that holds the ball names the ball it met; every ball of the strike is in one.
+    const auto pair = std::find_if(strike.touching_balls.begin(), strike.touching_balls.end(),
+                                   [&](const TouchingBalls& p)
+                                   { return static_cast<int>(p.first) == ball || static_cast<int>(p.second) == ball; });
+    if (pair == strike.touching_balls.end())
+      continue;
+    std::vector<MotionEvent>& events = trajectory.balls[static_cast<std::size_t>(ball)].events;
     MotionEvent met = events.front();
     met.type = MotionEventType::BallCollision;
-    met.ball = static_cast<int>(bodies.members[static_cast<std::size_t>(bodies.touches[k])]);
+    met.ball = static_cast<int>(static_cast<int>(pair->first) == ball ? pair->second : pair->first);
     events.insert(events.begin() + 1, met);
   }
   trajectory.ball_impacts.insert(trajectory.ball_impacts.begin(), record);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "billiard_shot_planner/scenarios/ball_collision.hpp"
+
 namespace billiard_shot_planner
 {
 namespace planning
@@ -54,6 +56,20 @@ double initialSpeed(double cue_path, double object_path, double cut, const PlanC
   return std::clamp(cue_ball / BALL_OVER_CUE, limits.min_speed, limits.max_speed);
 }
 
+/// The farthest a frozen target's way to its pocket may turn from the line of centres: the strike's throw turns the
+/// target by a few degrees at most (docs/cue_strike.md, Frozen balls), and the refinement finds it.
+constexpr double FROZEN_MAX_TURN = 8.0 * M_PI / 180.0;
+
+/// A cue ball frozen to the target sends it along their line of centres (turned by the throw): the target leaves with
+/// about half the cue ball's lone speed, as the two balls share the cue's push while they touch.
+double frozenSpeed(double object_path, const PlanContext& context)
+{
+  constexpr double DECELERATION = 0.5, BALL_OVER_CUE = 1.2;
+  const double object = std::sqrt(2.0 * DECELERATION * (object_path + 0.3));
+  const RobotLimits& limits = context.request.limits;
+  return std::clamp(2.0 * object / BALL_OVER_CUE, limits.min_speed, limits.max_speed);
+}
+
 std::vector<int> pocketsToTry(const PlanContext& context)
 {
   if (context.request.pocket >= 0)
@@ -79,10 +95,47 @@ bool routeIsClear(const Eigen::Vector2d& object, const Eigen::Vector2d& hole, co
          (route.bank_cushion < 0 || pathIsClear(route.first_leg_end, hole, target, context));
 }
 
+/// The target touches the cue ball: the strike moves both at once, and the target leaves along the line of centres
+/// turned by the throw, so the cue aims along that line, turned towards the route by a few times the angle to find.
+void addFrozenCandidate(const TableBall& target, int pocket, const Route& route, const PlanContext& context,
+                        CandidateSearch& search)
+{
+  const Eigen::Vector2d object = target.state.position.head<2>();
+  const Eigen::Vector2d centres = (object - context.cue_ball).normalized();
+  const Eigen::Vector2d line = (route.first_leg_end - object).normalized();
+  const double turn = std::atan2(centres.x() * line.y() - centres.y() * line.x(), centres.dot(line));
+  if (std::abs(turn) > FROZEN_MAX_TURN)
+  {
+    ++search.too_thin;
+    return;
+  }
+  const bool route_blocked = !routeIsClear(
+      object, context.configuration.table.pockets[static_cast<std::size_t>(pocket)].centre, route, target.id, context);
+  search.blocked += route_blocked;
+  Stroke stroke;
+  stroke.phi = std::atan2(centres.y(), centres.x()) + 3.0 * turn;
+  stroke.speed = frozenSpeed(route.length, context);
+  const auto theta = clearElevation(stroke, context, context.request.limits.min_theta);
+  if (!theta)
+  {
+    ++search.cue_blocked;
+    return;
+  }
+  stroke.theta = *theta;
+  const double penalty = (route_blocked ? BLOCKED_PENALTY : 1.0) * (route.bank_cushion >= 0 ? BANK_PENALTY : 1.0);
+  search.candidates.push_back({target.id, pocket, stroke, std::abs(turn), penalty * route.length, route.bank_cushion,
+                               CueBallPath::Straight, context.cue_ball, line, false, route_blocked});
+}
+
 void addCandidate(const TableBall& target, int pocket, const Route& route, const PlanContext& context,
                   CandidateSearch& search)
 {
   ++search.pairs;
+  if ((target.state.position.head<2>() - context.cue_ball).norm() <= 2.0 * context.radius() + TOUCHING_GAP)
+  {
+    addFrozenCandidate(target, pocket, route, context, search);
+    return;
+  }
   const Eigen::Vector2d object = target.state.position.head<2>();
   const Eigen::Vector2d hole = context.configuration.table.pockets[static_cast<std::size_t>(pocket)].centre;
   const Eigen::Vector2d line = (route.first_leg_end - object).normalized();

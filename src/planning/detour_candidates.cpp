@@ -356,6 +356,8 @@ std::vector<Variant> variants(const Candidate& blocked, const PlanContext& conte
 
 DetourSearch detourCandidates(const Candidate& blocked, const PlanContext& context, Clock::time_point until)
 {
+  if (context.cue_ball_touches)
+    return {};  // the lone ball's strike, which the detours scan, is not this cue ball's
   LonePaths paths(blocked, context);
   std::vector<std::pair<double, Candidate>> found;
   for (const Variant& variant : variants(blocked, context))

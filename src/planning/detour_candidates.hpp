@@ -21,7 +21,8 @@ struct DetourSearch
 /// table, so that the cushions' and the cloth's effects on a spinning or flying ball are the model's own; each
 /// stroke's direction is the root, found by Boost's TOMS 748, of the angle between the direction the target would
 /// leave in and the candidate's line. Kept: the roots whose path passes every other ball by more than 2R before it
-/// meets the target, the best of each kind. Ends early at `until`.
+/// meets the target, the best of each kind. Ends early at `until`; none for a cue ball that touches a ball or a cushion
+/// (its strike moves them too, which the lone ball's paths do not know).
 DetourSearch detourCandidates(const Candidate& blocked, const PlanContext& context, Clock::time_point until);
 
 }  // namespace planning

@@ -27,6 +27,9 @@ struct PlanContext
   Eigen::Vector2d cue_ball;         ///< its centre on the cloth
   std::vector<TableBall> others;    ///< every ball but the cue ball, in the request's order
   Clock::time_point deadline;
+  /// The cue ball touches a ball or a cushion: its strike moves them too (strikeBall), so no search may stand on the
+  /// lone ball's strike.
+  bool cue_ball_touches = false;
 
   double radius() const { return configuration.ball_radius; }
   /// Past `until` (by default the deadline), or asked to stop by the caller.

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "billiard_shot_planner/core/validation.hpp"
+#include "billiard_shot_planner/motion/table_strike.hpp"
 #include "candidates.hpp"
 #include "detour_candidates.hpp"
 #include "noisy_rollouts.hpp"
@@ -226,7 +227,7 @@ std::string noPotExplanation(const CandidateSearch& search, const std::vector<Re
 
 PlanContext makeContext(const PlanRequest& request, const ShotConfiguration& configuration)
 {
-  PlanContext context{request, configuration, Eigen::Vector2d::Zero(), {}, {}};
+  PlanContext context{request, configuration, Eigen::Vector2d::Zero(), {}, {}, false};
   context.configuration.solver.relative_tolerance =
       std::max(configuration.solver.relative_tolerance, PLANNING_TOLERANCE);
   context.configuration.solver.absolute_tolerance =
@@ -236,6 +237,12 @@ PlanContext makeContext(const PlanRequest& request, const ShotConfiguration& con
       context.cue_ball = ball.state.position.head<2>();
     else
       context.others.push_back(ball);
+  std::vector<TableBall> balls{{request.cue_ball, {}}};
+  balls.front().state.position = Eigen::Vector3d(context.cue_ball.x(), context.cue_ball.y(), configuration.ball_radius);
+  balls.insert(balls.end(), context.others.begin(), context.others.end());
+  context.cue_ball_touches = !strikeBodies(balls, 0, {configuration.ball_mass, configuration.ball_radius},
+                                           configuration.table, configuration.ball_contact)
+                                  .lone();
   return context;
 }
 

@@ -28,16 +28,34 @@ void fillStrike(ShotPrediction& m, const CueStrikeResult& strike, const Eigen::V
   m.miscue = strike.miscue;
   m.leaves_cloth = strike.leaves_cloth;
   m.converged = strike.impact.converged;
-  const char* names[] = {"cue-ball", "ball-table"};
   for (const ContactEvent& e : strike.impact.events)
   {
     ImpactEvent event;
     event.type = toString(e.type);
-    event.contact = names[e.contact];
+    event.contact = e.contact < strike.contacts.size() ? strike.contacts[e.contact].name : "";
     event.time = e.at.time;
     event.normal_impulses.assign(e.at.normal_impulses.data(),
                                  e.at.normal_impulses.data() + e.at.normal_impulses.size());
     m.contact_events.push_back(event);
+  }
+  for (const StrikeContact& c : strike.contacts)
+  {
+    StrikeImpulse contact;
+    contact.name = c.name;
+    contact.impulse = toVector3(c.impulse);
+    m.strike_contacts.push_back(contact);
+  }
+}
+
+void fillStruckBalls(ShotPrediction& m, const CueStrikeResult& strike, const std::vector<std::string>& ids)
+{
+  for (const StruckBall& b : strike.other_balls)
+  {
+    BallAfterStrike ball;
+    ball.id = b.ball < ids.size() ? ids[b.ball] : "";
+    ball.velocity = toVector3(b.velocity);
+    ball.angular_velocity = toVector3(b.angular_velocity);
+    m.struck_balls.push_back(ball);
   }
 }
 
@@ -117,6 +135,7 @@ ShotPrediction toMessage(const ShotOutcome& outcome, const std::string& frame, d
   ShotPrediction m;
   m.header.frame_id = frame;
   fillStrike(m, outcome.strike, outcome.hit_point);
+  fillStruckBalls(m, outcome.strike, outcome.table.ids);
   fillTrajectory(m, outcome.trajectory, outcome.table.ids, spacing);
   fillTable(m, outcome.table, spacing);
   return m;

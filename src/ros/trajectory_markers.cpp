@@ -156,6 +156,33 @@ void addGhostBall(visualization_msgs::MarkerArray& array, const ShotOutcome& out
     }
 }
 
+/// The balls of the strike's impact, for a cue ball that touches others: a line joining each touching pair at the
+/// balls' height, and each other ball's velocity right after the strike.
+void addStrikeContacts(visualization_msgs::MarkerArray& array, const ShotOutcome& outcome, const std::string& frame,
+                       const MarkerStyle& style)
+{
+  if (outcome.strike.touching_balls.empty())
+    return;
+  const auto start = [&](std::size_t ball) { return outcome.table.balls[ball].events.front().state.position; };
+  Marker pairs = marker(frame, "strike_contacts", 0, Marker::LINE_LIST);
+  pairs.scale.x = 0.01;
+  pairs.color = rgba(1.0f, 0.3f, 0.0f);
+  for (const TouchingBalls& pair : outcome.strike.touching_balls)
+    if (std::max(pair.first, pair.second) < outcome.table.balls.size())
+      pairs.points.insert(pairs.points.end(), {toPoint(start(pair.first)), toPoint(start(pair.second))});
+  array.markers.push_back(pairs);
+  int id = 0;
+  for (const StruckBall& ball : outcome.strike.other_balls)
+  {
+    if (ball.ball >= outcome.table.balls.size())
+      continue;
+    Marker velocity = arrow(frame, "strike_velocity", start(ball.ball),
+                            start(ball.ball) + style.velocity_scale * ball.velocity, rgba(1.0f, 1.0f, 0.0f));
+    velocity.id = id++;
+    array.markers.push_back(velocity);
+  }
+}
+
 void addTable(visualization_msgs::MarkerArray& array, const Table& table, const std::string& frame)
 {
   Marker cloth = marker(frame, "table", 0, Marker::CUBE);
@@ -238,6 +265,7 @@ visualization_msgs::MarkerArray trajectoryMarkers(const ShotOutcome& outcome, co
   for (std::size_t k = 1; k < outcome.table.balls.size(); ++k)
     addObjectBall(array, outcome, k, frame, sample_spacing, diameter, style);
   addGhostBall(array, outcome, frame, diameter);
+  addStrikeContacts(array, outcome, frame, style);
   addTable(array, configuration.table, frame);
   return array;
 }

@@ -22,8 +22,9 @@ struct MarkerStyle
 std_msgs::ColorRGBA phaseColour(MotionPhase phase);
 
 /// One array for one prediction, in `frame`: a DELETEALL first, then the path (a LINE_STRIP coloured by phase),
-/// the ball at the start and at the end, velocity and spin arrows at launch, the hit point, the cue, events, and
-/// the table (cloth, cushions, pockets). Pure function: testable without a ROS master.
+/// the ball at the start and at the end, velocity and spin arrows at launch, the hit point, the cue, events, the
+/// strike's touching balls (when the cue ball touches others) and the table (cloth, cushions, pockets). Pure function:
+/// testable without a ROS master.
 visualization_msgs::MarkerArray trajectoryMarkers(const ShotOutcome& outcome, const ShotConfiguration& configuration,
                                                   const std::string& frame, double sample_spacing,
                                                   const MarkerStyle& style = {});

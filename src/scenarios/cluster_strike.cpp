@@ -148,6 +148,8 @@ Expected<CueStrikeResult> solve(const ClusterStrike& strike, const SolverOptions
     if (i != strike.struck)
       result.other_balls.push_back(
           {i, result.impact.velocity.segment<3>(ball_at(i)), result.impact.velocity.segment<3>(ball_at(i) + 3)});
+  for (const TouchingPair& pair : c.balls.pairs)
+    result.touching_balls.push_back({std::min(pair.a, pair.b), std::max(pair.a, pair.b)});
   return result;
 }
 

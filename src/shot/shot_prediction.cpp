@@ -1,5 +1,6 @@
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
 #include "billiard_shot_planner/core/validation.hpp"
+#include "billiard_shot_planner/motion/table_strike.hpp"
 
 #include <algorithm>
 #include <string>
@@ -102,14 +103,23 @@ Error inRequestTerms(Error error)
   return error;
 }
 
-Expected<TableTrajectory> moveBalls(const BallState& cue_ball, const std::vector<TableBall>& others,
-                                    const ShotConfiguration& c, const MotionParameters& motion)
+/// The cue ball (at `cue_ball`, at rest before the strike) and the others, as the table's balls: the cue ball first.
+std::vector<TableBall> tableBalls(const Eigen::Vector2d& cue_ball, double radius, const std::vector<TableBall>& others)
+{
+  std::vector<TableBall> balls{{CUE_BALL_ID, {}}};
+  balls.front().state.position = Eigen::Vector3d(cue_ball.x(), cue_ball.y(), radius);
+  balls.insert(balls.end(), others.begin(), others.end());
+  return balls;
+}
+
+Expected<TableTrajectory> moveBalls(const std::vector<TableBall>& balls, const ShotConfiguration& c,
+                                    const MotionParameters& motion)
 {
   const BallProperties ball{c.ball_mass, c.ball_radius};
-  if (others.empty())
+  if (balls.size() == 1)
   {
     // The lone ball: its own checks name its fields as a lone ball's.
-    auto trajectory = predictTrajectory(cue_ball, ball, c.table, motion);
+    auto trajectory = predictTrajectory(balls.front().state, ball, c.table, motion);
     if (!trajectory)
       return trajectory.error();
     TableTrajectory table;
@@ -117,8 +127,6 @@ Expected<TableTrajectory> moveBalls(const BallState& cue_ball, const std::vector
     table.balls.push_back(std::move(trajectory).value());
     return table;
   }
-  std::vector<TableBall> balls{{CUE_BALL_ID, cue_ball}};
-  balls.insert(balls.end(), others.begin(), others.end());
   auto table = simulateTable(balls, ball, c.table, motion, c.ball_contact);
   if (!table)
     return inRequestTerms(table.error());
@@ -126,7 +134,8 @@ Expected<TableTrajectory> moveBalls(const BallState& cue_ball, const std::vector
 }
 }  // namespace
 
-Expected<CueStrikeResult> strikeBall(const CuePlacement& cue, const ShotConfiguration& c)
+Expected<CueStrikeResult> strikeBall(const CuePlacement& cue, const ShotConfiguration& c,
+                                     const std::vector<TableBall>& others)
 {
   if (Status status = firstError(
           {requireFinite(cue.tip, "cue_pose.position"), requireDirection(cue.direction, "cue_pose.orientation"),
@@ -148,13 +157,19 @@ Expected<CueStrikeResult> strikeBall(const CuePlacement& cue, const ShotConfigur
   strike.cue_contact = c.cue_contact;
   strike.table_contact = c.table.cloth;
   strike.stiffness_ratio = c.stiffness_ratio;
-  return solve(strike, c.solver);
+  if (others.empty())
+    return solve(strike, c.solver);
+  auto struck =
+      strikeOnTable(strike, tableBalls(cue.ball, c.ball_radius, others), 0, c.table, c.ball_contact, c.solver);
+  if (!struck)
+    return inRequestTerms(struck.error());
+  return struck;
 }
 
 Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfiguration& c,
                                   const std::vector<TableBall>& others)
 {
-  auto struck = strikeBall(cue, c);
+  auto struck = strikeBall(cue, c, others);
   if (!struck)
     return struck.error();
   return predictShotAfter(cue, std::move(struck).value(), c, others);
@@ -163,14 +178,14 @@ Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfigurati
 Expected<ShotOutcome> predictShotAfter(const CuePlacement& cue, CueStrikeResult struck, const ShotConfiguration& c,
                                        const std::vector<TableBall>& others)
 {
+  for (const StruckBall& other : struck.other_balls)
+    if (other.ball == 0 || other.ball > others.size())
+      return invalidArgument("strike.other_balls",
+                             "names a ball the table does not have: not the strike of these balls");
   const Eigen::Vector3d centre(cue.ball.x(), cue.ball.y(), c.ball_radius);
-  BallState start;
-  start.position = centre;
-  start.velocity = struck.velocity;
-  start.angular_velocity = struck.angular_velocity;
   MotionParameters motion = c.motion;
   motion.impact = c.solver;
-  auto table = moveBalls(start, others, c, motion);
+  auto table = moveBalls(ballsAfterStrike(tableBalls(cue.ball, c.ball_radius, others), 0, struck), c, motion);
   if (!table)
   {
     Error error = table.error();
@@ -178,6 +193,7 @@ Expected<ShotOutcome> predictShotAfter(const CuePlacement& cue, CueStrikeResult 
       error.field = "ball_position";  // the start of the trajectory is where the request put the ball
     return error;
   }
+  recordStrike(table.value(), 0, struck);
   BallTrajectory cue_ball = table.value().balls.front();
   const Eigen::Vector3d hit_point = centre + c.ball_radius * struck.hit_normal;
   return ShotOutcome{std::move(struck), std::move(cue_ball), hit_point, std::move(table).value()};

@@ -17,8 +17,6 @@ struct StrikeBodies
 {
   BallCollision bodies;              ///< the balls named by their ids, the cushions as "cushion0" … "cushion3"
   std::vector<std::size_t> members;  ///< bodies.balls[k] is balls[members[k]]; the struck ball first
-  /// For each member, a member it touches (by index into `members`), or −1 for a struck ball that touches none.
-  std::vector<int> touches;
 
   bool lone() const { return members.size() == 1 && bodies.cushions.empty(); }
 };
@@ -39,9 +37,10 @@ Expected<CueStrikeResult> strikeOnTable(const CueStrike& strike, const std::vect
 std::vector<TableBall> ballsAfterStrike(std::vector<TableBall> balls, std::size_t struck,
                                         const CueStrikeResult& strike);
 
-/// Records a strike that moved other balls in a simulated table (a lone strike records nothing): one ball impact at
-/// t = 0 with every ball it moved, and in each of their trajectories a ball_collision event at t = 0, right after the
-/// start, naming a ball it touched — so that firstContact() and the impact records count the strike's meetings.
-void recordStrike(TableTrajectory& trajectory, const StrikeBodies& bodies);
+/// Records a strike that moved other balls in a simulated table (a strike that met no ball records nothing): one ball
+/// impact at t = 0 with every ball it moved, and in each of their trajectories a ball_collision event at t = 0, right
+/// after the start, naming a ball it touched — so that firstContact() and the impact records count the strike's
+/// meetings. `struck` and the strike's indices number the balls as the trajectory does.
+void recordStrike(TableTrajectory& trajectory, std::size_t struck, const CueStrikeResult& strike);
 
 }  // namespace billiard_shot_planner

@@ -83,10 +83,9 @@ struct BallCollision
   std::vector<CushionTouch> cushions;
   SurfaceContact cushion{0.85, 0.2, 10.0};
   double cushion_stiffness_ratio = 1.0;  ///< k_cushion / k_cloth
-  /// Centres within 2R + this are touching, m; closer than 2R − this is an overlap and refused. A micrometre:
-  /// far above the round-off of positions in metres and far below what a ball's motion covers during an impact.
-  /// (The table's motion and the strike use TOUCHING_GAP; making the two one gap is open work.)
-  double touching_tolerance = 1e-6;
+  /// Centres within 2R + this are touching, m; closer than 2R − this is an overlap and refused. TOUCHING_GAP, as
+  /// the strike and the table's motion use it (docs/impact_model.md, Touching bodies).
+  double touching_tolerance = TOUCHING_GAP;
 };
 
 /// Two touching balls: contact k of the impact joins balls `b` (B) and `a` (A) of pairs[k], b < a, with its normal

@@ -38,7 +38,8 @@ Expected<ImpactProblem> makeImpactProblem(const ClusterStrike& strike);
 
 /// Solves the strike. The answer is the struck ball's and the cue's as CueStrikeResult reports a lone strike
 /// (impulse_table: the struck ball's cloth contact), with `contacts` naming every contact, `states` by the names of
-/// their active contacts, and `other_balls` every other ball of `bodies` (indices into bodies.balls).
+/// their active contacts, `other_balls` every other ball of `bodies` and `touching_balls` every touching pair
+/// (indices into bodies.balls).
 Expected<CueStrikeResult> solve(const ClusterStrike& strike, const SolverOptions& options = {});
 
 }  // namespace billiard_shot_planner

@@ -68,6 +68,13 @@ struct StruckBall
   Eigen::Vector3d angular_velocity;
 };
 
+/// Two balls that touched during the strike (indices as the caller numbers the balls, `first` < `second`).
+struct TouchingBalls
+{
+  std::size_t first = 0;
+  std::size_t second = 0;
+};
+
 struct CueStrikeResult
 {
   Eigen::Vector3d velocity;          ///< ball, m/s
@@ -89,7 +96,10 @@ struct CueStrikeResult
   /// ball–table contact.
   std::vector<StrikeContact> contacts;
   std::vector<StruckBall> other_balls;  ///< empty for a lone strike
-  ImpactResult impact;                  ///< the engine's full result, contacts as `contacts`
+  /// Every pair of balls in contact in the strike (the struck ball's index as the caller gives it); empty for a
+  /// lone strike.
+  std::vector<TouchingBalls> touching_balls;
+  ImpactResult impact;  ///< the engine's full result, contacts as `contacts`
 };
 
 /// The engine's configuration for this strike: generalised velocity (v_c, [v_⊥1, v_⊥2,] v, ω) — the tip along ĉ,

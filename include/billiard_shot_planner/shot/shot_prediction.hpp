@@ -73,8 +73,11 @@ struct ShotOutcome
 };
 
 /// The strike alone, predictShot's first part: the hit point where the cue axis meets the ball and the ball's
-/// velocity and spin right after the cue leaves it. Errors as predictShot's.
-Expected<CueStrikeResult> strikeBall(const CuePlacement& cue, const ShotConfiguration& configuration);
+/// velocity and spin right after the cue leaves it. A cue ball that touches other balls of `others` or a cushion
+/// (within TOUCHING_GAP) is struck as one multiple impact with all it touches (strikeOnTable): `other_balls` then
+/// numbers `others` from 1 (0 is the cue ball). Errors as predictShot's.
+Expected<CueStrikeResult> strikeBall(const CuePlacement& cue, const ShotConfiguration& configuration,
+                                     const std::vector<TableBall>& others = {});
 
 /// The whole prediction: the hit point where the cue axis meets the ball, the strike by the multiple-impact
 /// engine, and the path of every ball on the table (`others`: the balls besides the cue ball, at rest or moving;
@@ -83,8 +86,9 @@ Expected<CueStrikeResult> strikeBall(const CuePlacement& cue, const ShotConfigur
 Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfiguration& configuration,
                                   const std::vector<TableBall>& others = {});
 
-/// predictShot's second part: the balls' paths after a strike already solved by strikeBall(cue, configuration) (a
-/// fit of the motion's constants, which the strike does not depend on, solves each strike once).
+/// predictShot's second part: the balls' paths after a strike already solved by strikeBall(cue, configuration,
+/// others) (a fit of the motion's constants, which the strike does not depend on, solves each strike once). The balls
+/// the strike moved start with its velocities, and its meetings are recorded at t = 0 (recordStrike).
 Expected<ShotOutcome> predictShotAfter(const CuePlacement& cue, CueStrikeResult struck,
                                        const ShotConfiguration& configuration,
                                        const std::vector<TableBall>& others = {});
