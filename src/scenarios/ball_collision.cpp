@@ -187,8 +187,9 @@ std::string ballName(const BallCollision& c, std::size_t i)
 
 Status validate(const BallCollision& c)
 {
-  if (c.balls.size() < 2)
-    return invalidArgument("balls", "a collision needs at least two balls, got " + std::to_string(c.balls.size()));
+  if (c.balls.empty() || (c.balls.size() < 2 && c.cushions.empty()))
+    return invalidArgument("balls", "a collision needs at least two balls, or a ball and a cushion, got " +
+                                        std::to_string(c.balls.size()) + " ball(s)");
   if (Status status =
           firstError({requirePositive(c.ball_mass, "ball_mass"), requirePositive(c.ball_radius, "ball_radius"),
                       validate(c.ball_ball, "ball_ball"), validate(c.cloth, "cloth"),

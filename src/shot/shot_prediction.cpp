@@ -157,8 +157,6 @@ Expected<CueStrikeResult> strikeBall(const CuePlacement& cue, const ShotConfigur
   strike.cue_contact = c.cue_contact;
   strike.table_contact = c.table.cloth;
   strike.stiffness_ratio = c.stiffness_ratio;
-  if (others.empty())
-    return solve(strike, c.solver);
   auto struck =
       strikeOnTable(strike, tableBalls(cue.ball, c.ball_radius, others), 0, c.table, c.ball_contact, c.solver);
   if (!struck)

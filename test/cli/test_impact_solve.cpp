@@ -474,6 +474,32 @@ TEST(ImpactSolve, TableShotPotsAStraightInBall)
   EXPECT_FALSE(one.contains("samples"));
 }
 
+// The same shot with the cue ball frozen to the object ball (2R apart on the diagonal): the strike is one impact with
+// the ball it touches, and the answer's strike names its contacts, the ball it moved and the touching pair; the lone
+// shot's strike has only the cue's and the cloth's contacts.
+TEST(ImpactSolve, TableShotStrikesAFrozenBallWithTheCueBall)
+{
+  auto frozen = straightInShot();
+  const double two_r = 2.0 * 0.028575;  // the stroke's ball_radius
+  frozen["balls"][1]["position"] = {0.2 + two_r * 2.0 / std::sqrt(5.0), 0.1 + two_r / std::sqrt(5.0)};
+  const SolverRun run = runSolver(frozen.dump());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto strike = nlohmann::json::parse(run.output)["strike"];
+  std::vector<std::string> names;
+  for (const auto& contact : strike["contacts"])
+    names.push_back(contact["name"]);
+  EXPECT_EQ(names, (std::vector<std::string>{"tip-cue", "cue-one", "cue-cloth", "one-cloth"}));
+  ASSERT_EQ(strike["other_balls"].size(), 1u);
+  EXPECT_EQ(strike["other_balls"][0]["id"], "one");
+  EXPECT_GT(strike["other_balls"][0]["v"][0].get<double>(), 0.0);
+  EXPECT_EQ(strike["touching"], nlohmann::json::parse(R"([["cue", "one"]])"));
+  const auto lone = nlohmann::json::parse(runSolver(straightInShot().dump()).output)["strike"];
+  ASSERT_EQ(lone["contacts"].size(), 2u);
+  EXPECT_EQ(lone["contacts"][0]["name"], "cue-ball");
+  EXPECT_TRUE(lone["other_balls"].empty());
+  EXPECT_TRUE(lone["touching"].empty());
+}
+
 // With "samples": true every ball is sampled at the same instants k·sample_spacing (plus its own events).
 TEST(ImpactSolve, TableShotSamplesEveryBallAtTheSameTimes)
 {

@@ -319,3 +319,28 @@ TEST(ShotPlanner, BadRequestsAreRefusedNamingTheField)
   r.cue_region = bsp::CueRegion{{0.0, 0.0}, -0.1};
   EXPECT_EQ(field(r), "cue_region.radius");
 }
+
+// A cue ball frozen to the target, their line of centres 3° off the line to the corner pocket: whatever the cue's
+// aim, the target leaves along the line of centres turned by the throw (at most atan μ ≈ 6.7°), so a pot exists only
+// through the combined strike. The planner finds it, it pots when replayed, and the strike moves the target at once.
+TEST(ShotPlanner, AFrozenTargetLinedUpWithAPocketIsPotted)
+{
+  const bsp::Table table;
+  const Eigen::Vector2d pocket = table.pockets[TOP_RIGHT].centre;
+  const Eigen::Vector2d line = -pocket.normalized();
+  const Eigen::Vector2d object = pocket + 0.6 * line;
+  const double turn = 3.0 * M_PI / 180.0;
+  const Eigen::Vector2d back(std::cos(turn) * line.x() - std::sin(turn) * line.y(),
+                             std::sin(turn) * line.x() + std::cos(turn) * line.y());
+  const Eigen::Vector2d cue = object + 2.0 * R * back;
+  bsp::PlanRequest request;
+  request.balls = {ballAt("cue", cue.x(), cue.y()), ballAt("one", object.x(), object.y())};
+  request.target = "one";
+  request.budget = 2.0;
+  const bsp::ShotPlan plan = planned(request);
+  ASSERT_TRUE(plan.found) << plan.explanation;
+  EXPECT_EQ(plan.best.pocket, TOP_RIGHT);
+  EXPECT_TRUE(replayPots(plan.best.cue, request, "one", TOP_RIGHT));
+  ASSERT_EQ(plan.outcome.strike.other_balls.size(), 1u);
+  EXPECT_GT(plan.best.success_probability, 0.5);
+}

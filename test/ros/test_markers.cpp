@@ -114,3 +114,34 @@ TEST(TrajectoryMarkers, EveryBallOfTheTableIsDrawnWithItsId)
   EXPECT_EQ(labels, (std::set<std::string>{"one", "two"}));
   EXPECT_EQ(ids["ghost_ball"].size(), 1u);
 }
+
+// A frozen shot draws the strike's touching pair (one line from the cue ball to the ball it touches) and the velocity
+// the strike gave that ball; a lone strike draws neither.
+TEST(TrajectoryMarkers, FrozenShotDrawsTheBallsOfTheStrike)
+{
+  const bsp::ShotConfiguration configuration;
+  const bsp::CuePlacement cue = shot_fixtures::follow();
+  bsp::TableBall one{"one", {}};
+  one.state.position << cue.ball.x() + 2.0 * configuration.ball_radius, cue.ball.y(), configuration.ball_radius;
+  const auto frozen = bsp::predictShot(cue, configuration, {one});
+  ASSERT_TRUE(frozen.ok()) << frozen.error().describe();
+  int pairs = 0, velocities = 0;
+  for (const Marker& m : bsp::trajectoryMarkers(frozen.value(), configuration, "table", 0.01).markers)
+  {
+    if (m.ns == "strike_contacts")
+    {
+      ASSERT_EQ(m.points.size(), 2u);
+      EXPECT_NEAR(std::hypot(m.points[1].x - m.points[0].x, m.points[1].y - m.points[0].y),
+                  2.0 * configuration.ball_radius, 1e-9);
+      ++pairs;
+    }
+    velocities += m.ns == "strike_velocity";
+  }
+  EXPECT_EQ(pairs, 1);
+  EXPECT_EQ(velocities, 1);
+  one.state.position.x() += 0.3;
+  const auto lone = bsp::predictShot(cue, configuration, {one});
+  ASSERT_TRUE(lone.ok());
+  for (const Marker& m : bsp::trajectoryMarkers(lone.value(), configuration, "table", 0.01).markers)
+    EXPECT_TRUE(m.ns != "strike_contacts" && m.ns != "strike_velocity") << m.ns;
+}

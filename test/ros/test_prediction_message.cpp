@@ -1,6 +1,8 @@
 // Core prediction → ShotPrediction message: every field carries the core's value.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "parameter_names.hpp"
 #include "prediction_message.hpp"
 #include "shot_fixtures.hpp"
@@ -70,4 +72,29 @@ TEST(Tuning, RoundTripAndRejection)
   EXPECT_TRUE(bsp::applyTuning(c, tuning).ok());
   tuning.ball_radius = 0.015;  // nose above the ball: rejected
   EXPECT_EQ(bsp::applyTuning(c, tuning).error().field, "table/cushion_height");
+}
+
+// A cue ball frozen to a ball: the message lists every contact of the strike by name with its impulse, the ball the
+// strike moved with its velocity, and the contact events name their contact (an index past the lone strike's two).
+TEST(PredictionMessage, CarriesAFrozenStrikesContactsAndMovedBalls)
+{
+  const bsp::ShotConfiguration configuration;
+  const bsp::CuePlacement cue = shot_fixtures::follow();
+  bsp::TableBall one{"one", {}};
+  one.state.position << cue.ball.x() + 2.0 * configuration.ball_radius, cue.ball.y(), configuration.ball_radius;
+  const auto outcome = bsp::predictShot(cue, configuration, {one});
+  ASSERT_TRUE(outcome.ok()) << outcome.error().describe();
+  const auto m = bsp::toMessage(outcome.value(), "table", 0.01);
+  ASSERT_EQ(m.strike_contacts.size(), outcome.value().strike.contacts.size());
+  EXPECT_EQ(m.strike_contacts[1].name, "cue-one");
+  EXPECT_EQ(m.strike_contacts[1].impulse.x, outcome.value().strike.contacts[1].impulse.x());
+  ASSERT_EQ(m.struck_balls.size(), 1u);
+  EXPECT_EQ(m.struck_balls[0].id, "one");
+  EXPECT_EQ(m.struck_balls[0].velocity.x, outcome.value().strike.other_balls[0].velocity.x());
+  std::set<std::string> names;
+  for (const auto& contact : m.strike_contacts)
+    names.insert(contact.name);
+  for (const auto& event : m.contact_events)
+    EXPECT_EQ(names.count(event.contact), 1u) << event.contact;
+  EXPECT_EQ(m.first_contact, "one");
 }
