@@ -8,6 +8,7 @@
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "billiard_shot_planner/motion/table_simulation.hpp"
 #include "billiard_shot_planner/scenarios/ball_collision.hpp"
+#include "billiard_shot_planner/shot/shot_prediction.hpp"
 #include "paper_impulse_method.hpp"
 #include "paper_masse_method.hpp"
 
@@ -134,6 +135,60 @@ void BM_RackImpact(benchmark::State& state)
     benchmark::DoNotOptimize(bsp::solve(rack, options));
 }
 
+/// A level centre hit at 2 m/s on the cue ball at `ball` along `direction`, with the other balls of the table;
+/// argument: −log10 of the relative tolerance. Reports the strike's contacts.
+void strikeRepeatedly(benchmark::State& state, const Eigen::Vector2d& ball, const Eigen::Vector2d& direction,
+                      const std::vector<bsp::TableBall>& others)
+{
+  bsp::ShotConfiguration configuration;
+  configuration.solver = bench::withTolerance(std::pow(10.0, -static_cast<double>(state.range(0))));
+  bsp::CuePlacement cue;
+  cue.ball = ball;
+  cue.direction = Eigen::Vector3d(direction.x(), direction.y(), 0.0).normalized();
+  cue.tip =
+      Eigen::Vector3d(ball.x(), ball.y(), configuration.ball_radius) - 1.5 * configuration.ball_radius * cue.direction;
+  cue.speed = 2.0;
+  std::size_t contacts = 0;
+  for (auto _ : state)
+  {
+    auto struck = bsp::strikeBall(cue, configuration, others);
+    if (!struck)
+    {
+      state.SkipWithError(struck.error().describe().c_str());
+      return;
+    }
+    contacts = struck.value().contacts.size();
+  }
+  state.counters["contacts"] = static_cast<double>(contacts);
+}
+
+/// The lone strike, for scale: the cue ball alone on the table.
+void BM_LoneStrike(benchmark::State& state)
+{
+  strikeRepeatedly(state, {-0.4, 0.1}, {std::cos(0.35), std::sin(0.35)}, {});
+}
+
+/// A frozen pair: the object ball 2R from the cue ball along +x, the cue turned 20° from the line of centres.
+void BM_FrozenPairStrike(benchmark::State& state)
+{
+  const double radius = bsp::ShotConfiguration{}.ball_radius;
+  bsp::TableBall one{"one", {}};
+  one.state.position = Eigen::Vector3d(-0.4 + 2.0 * radius, 0.1, radius);
+  strikeRepeatedly(state, {-0.4, 0.1}, {std::cos(0.35), std::sin(0.35)}, {one});
+}
+
+/// A cue ball frozen to the side of the racked 15 balls (outside the rack's lower side, touching the third row's
+/// outer ball), struck straight into the rack: the cue's, 15 ball–ball, 16 cloth contacts in one impact.
+void BM_FrozenRackSideStrike(benchmark::State& state)
+{
+  const double radius = bsp::ShotConfiguration{}.ball_radius;
+  std::vector<bsp::TableBall> rack = bench::breakShot();
+  rack.erase(rack.begin());                                          // the cue ball of the break
+  const Eigen::Vector2d outward(-0.5, -0.5 * std::sqrt(3.0));        // away from the rack, across its lower side
+  const Eigen::Vector2d touched = rack[3].state.position.head<2>();  // row 2, the lower side's ball
+  strikeRepeatedly(state, touched + 2.0 * radius * outward, -outward, rack);
+}
+
 /// The paper's fixed-step impulse method on Table 1; argument: −log10 of the impulse step. Error against the
 /// converged values of docs/validation.md, Table 1 (v1 = 0.6139494, v2 = 0.2097195).
 void BM_Table1PaperMethod(benchmark::State& state)
@@ -173,6 +228,9 @@ BENCHMARK(BM_TrajectoryThreeCushions)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_TableCutShot)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RackImpact)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TableBreak)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LoneStrike)->Arg(8)->Arg(12)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_FrozenPairStrike)->Arg(8)->Arg(12)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_FrozenRackSideStrike)->Arg(8)->Arg(12)->Unit(benchmark::kMicrosecond);
 
 // Argument: −log10 of the relative tolerance (12 is the default; the closed form does not depend on it).
 // velocity_error: against the reference of bench_problems.hpp.
