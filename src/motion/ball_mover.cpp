@@ -145,7 +145,7 @@ Expected<bool> BallMover::runOwnEvent()
   }
 }
 
-void BallMover::interrupt(double t, const BallState& after, int other)
+void BallMover::closeSegment(double t)
 {
   // A resting ball's path holds still from its rest to the hit: the segment makes BallTrajectory::at exact there.
   if (status_ == Status::Moving || t > segment_.start_time)
@@ -153,10 +153,41 @@ void BallMover::interrupt(double t, const BallState& after, int other)
     segment_.end_time = t;
     trajectory_.segments.push_back(segment_);
   }
+}
+
+void BallMover::interrupt(double t, const BallState& after, int other)
+{
+  closeSegment(t);
   MotionEvent event{MotionEventType::BallCollision, t, after};
   event.ball = other;
   trajectory_.events.push_back(event);
   plan(after, t);
+}
+
+void BallMover::continueAt(double t)
+{
+  if (t > segment_.start_time)
+  {
+    segment_.end_time = t;
+    trajectory_.segments.push_back(segment_);
+  }
+}
+
+void BallMover::follow(double t, const MotionSegment& next)
+{
+  continueAt(t);
+  ++version_;
+  if (static_cast<int>(trajectory_.events.size()) >= p_.max_events || t >= p_.max_time)
+    return end(MotionEventType::TimeLimit, MotionOutcome::TimeLimit, t, next.start);
+  segment_ = next;
+  end_ = segmentEnd(segment_, PhaseMotion{}, t);
+  status_ = Status::Moving;
+}
+
+void BallMover::release(double t, const BallState& state)
+{
+  continueAt(t);
+  plan(state, t);
 }
 
 BallMover::SegmentEnd BallMover::segmentEnd(const MotionSegment& segment, const PhaseMotion& motion, double t) const

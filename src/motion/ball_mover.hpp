@@ -53,6 +53,17 @@ public:
   /// Ends the current segment at time t < nextEventTime() where an impact with other balls gives the ball the
   /// state `after`, records it as a BallCollision event with `other` (the index of a ball it met) and plans on.
   void interrupt(double t, const BallState& after, int other);
+  /// Ends the current segment at time t and goes on along `next` (from t, accelerations given: a step of a linked
+  /// pair) until the step's end or an own event of the ball (cushion, pocket, time limit). No event is recorded.
+  void follow(double t, const MotionSegment& next);
+  /// Records the phase change `event` at time t (a linked ball's slip or roll ending) with the state after it; the
+  /// next follow() or release() goes on from there.
+  void recordPhaseChange(double t, MotionEventType event, const BallState& after)
+  {
+    trajectory_.events.push_back({event, t, after});
+  }
+  /// Ends the current segment at time t and plans the ball's own motion from `state` (a linked pair let go).
+  void release(double t, const BallState& state);
   /// Moves the trajectory out; the mover is done.
   BallTrajectory takeTrajectory() { return std::move(trajectory_); }
   const BallTrajectory& trajectory() const { return trajectory_; }
@@ -71,6 +82,10 @@ private:
   };
 
   void plan(const BallState& state, double t);
+  /// Ends the current segment at t (a resting ball's too, so that its path holds still up to t).
+  void closeSegment(double t);
+  /// Ends the current segment at t; one that would have no length is dropped.
+  void continueAt(double t);
   SegmentEnd segmentEnd(const MotionSegment& segment, const PhaseMotion& motion, double t) const;
   Expected<bool> hitCushion(int rail, NoseContact contact, BallState& state, double t);
   Expected<bool> land(BallState& state, double t);

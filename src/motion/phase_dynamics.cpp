@@ -6,14 +6,19 @@ namespace billiard_shot_planner
 {
 namespace detail
 {
-namespace
-{
 double rollingDeceleration(const MotionParameters& p)
 {
   const double scale = p.rolling_model == RollingModel::Paper ? 5.0 / 7.0 : 1.0;
   return scale * p.rolling_friction * p.gravity;
 }
 
+double spinDeceleration(const BallProperties& ball, const MotionParameters& p)
+{
+  return 5.0 * p.spinning_friction * p.gravity / (2.0 * ball.radius);
+}
+
+namespace
+{
 /// Spin about z decays linearly on the cloth (docs/impact_model.md, Motion on the table); returns its angular
 /// deceleration and stop time.
 void addSpinDecay(PhaseMotion& motion, const BallState& state, const BallProperties& ball, const MotionParameters& p)
@@ -21,7 +26,7 @@ void addSpinDecay(PhaseMotion& motion, const BallState& state, const BallPropert
   const double w_z = state.angular_velocity.z();
   if (std::abs(w_z) <= REST_SPEED / ball.radius)
     return;
-  const double rate = 5.0 * p.spinning_friction * p.gravity / (2.0 * ball.radius);
+  const double rate = spinDeceleration(ball, p);
   motion.angular_acceleration.z() = -std::copysign(rate, w_z);
   const double stop = std::abs(w_z) / rate;
   if (stop < motion.end)

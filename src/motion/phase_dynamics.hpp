@@ -19,6 +19,11 @@ MotionPhase classify(const BallState& state, double radius);
 /// Contact slip velocity on the cloth, u = v + R ẑ × ω (its xy part).
 Eigen::Vector2d contactSlip(const BallState& state, double radius);
 
+/// Deceleration (m/s²) of a ball rolling freely on the cloth.
+double rollingDeceleration(const MotionParameters& p);
+/// Angular deceleration (rad/s²) of the spin about z on the cloth.
+double spinDeceleration(const BallProperties& ball, const MotionParameters& p);
+
 /// The closed-form motion of one phase: constant accelerations, and when the phase ends by itself.
 struct PhaseMotion
 {

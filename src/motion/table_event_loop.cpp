@@ -1,10 +1,12 @@
 #include "table_event_loop.hpp"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 
 #include "ball_contact_time.hpp"
 #include "ball_mover.hpp"
+#include "linked_pair.hpp"
 #include "table_collisions.hpp"
 
 namespace billiard_shot_planner
@@ -16,7 +18,7 @@ namespace
 constexpr double NEVER = std::numeric_limits<double>::infinity();
 
 /// The event loop over all balls. Pair contact times are cached and recomputed only when one of the two balls'
-/// segments has changed.
+/// segments has changed. Two balls pressed together are one linked pair (linked_pair.hpp), moved in steps.
 class TableSimulation
 {
 public:
@@ -33,6 +35,7 @@ public:
     for (std::size_t i = 0; i < balls.size(); ++i)
       movers_[i].begin(balls[i].state);
     pairs_.assign(balls.size() * balls.size(), PairContact{});
+    partner_.assign(balls.size(), -1);
   }
 
   Expected<TableTrajectory> run()
@@ -40,11 +43,18 @@ public:
     while (true)
     {
       const auto [own_time, mover] = earliestOwnEvent();
-      const auto [contact_time, pair] = earliestContact(own_time);
-      if (contact_time < own_time)
+      const auto [link_time, link] = earliestLinkEnd();
+      const double horizon = std::min(own_time, link_time);
+      const auto [contact_time, pair] = earliestContact(horizon);
+      if (contact_time < horizon)
       {
         if (Status status = collide(contact_time, pair.first, pair.second); !status)
           return status.error();
+        continue;
+      }
+      if (link_time < own_time)
+      {
+        stepLink(link, link_time);
         continue;
       }
       if (mover < 0)
@@ -52,6 +62,8 @@ public:
       auto ended = movers_[mover].runOwnEvent();
       if (!ended)
         return ended.error();
+      if (partner_[mover] >= 0)
+        unlink(mover, own_time);
     }
     for (BallMover& m : movers_)
       result_.balls.push_back(m.takeTrajectory());
@@ -64,6 +76,109 @@ private:
     unsigned version_i = 0, version_j = 0;  ///< the segments' versions it was computed for (0: never)
     double time = NEVER;
   };
+
+  /// A linked pair's current step: its balls (a < b), its end, and the phase each ball ends it with.
+  struct Link
+  {
+    int a = -1, b = -1;
+    double end = NEVER;
+    std::array<MotionEventType, 2> ends{MotionEventType::Rest, MotionEventType::Rest};
+  };
+
+  std::pair<double, int> earliestLinkEnd() const
+  {
+    double earliest = NEVER;
+    int link = -1;
+    for (std::size_t k = 0; k < links_.size(); ++k)
+      if (links_[k].end < earliest)
+      {
+        earliest = links_[k].end;
+        link = static_cast<int>(k);
+      }
+    return {earliest, link};
+  }
+
+  /// Ends link `k`'s step at t: the phases that end there, then the next step or the release.
+  void stepLink(int k, double t)
+  {
+    Link& link = links_[k];
+    std::array<BallState, 2> states{movers_[link.a].segment().at(t), movers_[link.b].segment().at(t)};
+    const std::array<int, 2> balls{link.a, link.b};
+    for (int m = 0; m < 2; ++m)
+      if (link.ends[m] != MotionEventType::Rest)
+      {
+        states[m] = endLinkedPhase(link.ends[m], states[m], ball_.radius);
+        movers_[balls[m]].recordPhaseChange(t, link.ends[m], states[m]);
+      }
+    if (!advanceLink(link, t, states))
+      removeLink(k, t, states);
+  }
+
+  /// Plans the pair's next step from `states` at t; false when the balls no longer press together.
+  bool advanceLink(Link& link, double t, const std::array<BallState, 2>& states)
+  {
+    const LinkStep step = linkStep(states[0], states[1], t, ball_, p_);
+    if (step.released)
+      return false;
+    movers_[link.a].follow(t, step.segments[0]);
+    movers_[link.b].follow(t, step.segments[1]);
+    link.end = t + step.duration;
+    link.ends = step.ends;
+    return movers_[link.a].status() == BallMover::Status::Moving &&
+           movers_[link.b].status() == BallMover::Status::Moving;
+  }
+
+  /// Lets a link go at t: each ball that still moves goes on its own from its state there.
+  void removeLink(int k, double t, const std::array<BallState, 2>& states)
+  {
+    const Link link = links_[k];
+    links_.erase(links_.begin() + k);
+    partner_[link.a] = partner_[link.b] = -1;
+    if (movers_[link.a].status() != BallMover::Status::Ended)
+      movers_[link.a].release(t, states[0]);
+    if (movers_[link.b].status() != BallMover::Status::Ended)
+      movers_[link.b].release(t, states[1]);
+  }
+
+  int linkOf(int ball) const
+  {
+    for (std::size_t k = 0; k < links_.size(); ++k)
+      if (links_[k].a == ball || links_[k].b == ball)
+        return static_cast<int>(k);
+    return -1;
+  }
+
+  /// Ball `ball` has left its link at t by an event of its own (its mover already went on): its partner goes on
+  /// alone.
+  void unlink(int ball, double t)
+  {
+    const int k = linkOf(ball);
+    const Link link = links_[k];
+    links_.erase(links_.begin() + k);
+    partner_[link.a] = partner_[link.b] = -1;
+    BallMover& other = movers_[link.a == ball ? link.b : link.a];
+    if (other.status() != BallMover::Status::Ended)
+      other.release(t, other.segment().at(t));
+  }
+
+  /// Links balls i and j at t where their motion after the impact presses them together.
+  void startLink(double t, int i, int j)
+  {
+    Link link{std::min(i, j), std::max(i, j)};
+    const std::array<BallState, 2> states{movers_[link.a].segment().at(t), movers_[link.b].segment().at(t)};
+    if (movers_[link.a].status() != BallMover::Status::Moving || movers_[link.b].status() != BallMover::Status::Moving)
+      return;
+    if (!advanceLink(link, t, states))
+    {
+      for (int m : {link.a, link.b})
+        if (movers_[m].status() != BallMover::Status::Ended)
+          movers_[m].release(t, movers_[m].segment().at(t));
+      return;
+    }
+    partner_[link.a] = link.b;
+    partner_[link.b] = link.a;
+    links_.push_back(link);
+  }
 
   std::pair<double, int> earliestOwnEvent() const
   {
@@ -114,6 +229,8 @@ private:
       return NEVER;
     if (a.status() != Status::Moving && b.status() != Status::Moving)
       return NEVER;  // two balls at rest stay apart (touching ones are part of the impact that reaches them)
+    if (partner_[index(a)] == index(b))
+      return NEVER;  // a linked pair stays in contact
     const double start = std::max(a.segment().start_time, b.segment().start_time);
     const double end = std::min(a.nextEventTime(), b.nextEventTime());
     const BallState sa = a.segment().at(start), sb = b.segment().at(start);
@@ -126,21 +243,51 @@ private:
     return t ? start + *t : NEVER;
   }
 
+  /// The impact of balls i and j with every ball touching them. Where the two press together and the meeting is
+  /// the limit of a sequence of ever smaller collisions, the impact is that limit (ball–ball contacts plastic) and
+  /// the pair goes on linked.
   Status collide(double t, int i, int j)
   {
+    const bool limit =
+        partner_[i] < 0 && partner_[j] < 0 && isSequenceLimit(pairPress(movers_[i].segment(), movers_[j].segment(), t));
     std::vector<int> cluster = touchingCluster(t, i, j);
+    for (int k : cluster)
+      if (partner_[k] >= 0)
+        unlinkForImpact(k, t, cluster);
     std::vector<BallState> states;
     states.reserve(cluster.size());
     for (int k : cluster)
       states.push_back(movers_[k].segment().at(t));
-    auto after = resolveBallImpact(states, ball_, table_, contact_, impactOptions());
+    auto after = resolveBallImpact(states, ball_, table_, limit ? plastic(contact_) : contact_, impactOptions());
     if (!after)
       return after.error();
     for (std::size_t k = 0; k < cluster.size(); ++k)
       movers_[cluster[k]].interrupt(t, after.value()[k], cluster[k] == i ? j : i);
     result_.ball_impacts.push_back({t, cluster});
+    if (limit)
+      startLink(t, i, j);
     return {};
   }
+
+  /// A linked ball meets an impact: the link ends; a partner outside the impact goes on alone.
+  void unlinkForImpact(int ball, double t, const std::vector<int>& cluster)
+  {
+    const int partner = partner_[ball];
+    const int k = linkOf(ball);
+    links_.erase(links_.begin() + k);
+    partner_[ball] = partner_[partner] = -1;
+    if (std::find(cluster.begin(), cluster.end(), partner) == cluster.end() &&
+        movers_[partner].status() != BallMover::Status::Ended)
+      movers_[partner].release(t, movers_[partner].segment().at(t));
+  }
+
+  static BallContactSettings plastic(BallContactSettings contact)
+  {
+    contact.ball_ball.restitution = 0.0;
+    return contact;
+  }
+
+  int index(const BallMover& mover) const { return static_cast<int>(&mover - movers_.data()); }
 
   /// Balls i and j and every ball touching them, directly or through others, at time t.
   std::vector<int> touchingCluster(double t, int i, int j) const
@@ -177,6 +324,8 @@ private:
   Deadline deadline_;
   std::vector<BallMover> movers_;
   std::vector<PairContact> pairs_;  ///< [i * n + j], i < j
+  std::vector<Link> links_;
+  std::vector<int> partner_;  ///< the ball each ball is linked to, or -1
   TableTrajectory result_;
 };
 }  // namespace
