@@ -160,9 +160,13 @@ TEST(SustainedContact, TheBreakEndsWithNoBallOnABoundOfEvents)
   for (double t = 0.0; t <= run.value().duration(); t += 5e-4)
     for (std::size_t i = 0; i < balls.size(); ++i)
       for (std::size_t j = i + 1; j < balls.size(); ++j)
+      {
         if (run.value().balls[i].outcome != bsp::MotionOutcome::Pocketed &&
             run.value().balls[j].outcome != bsp::MotionOutcome::Pocketed)
+        {
           EXPECT_GT(gap(run.value(), i, j, t), -1e-9) << i << " " << j << " t " << t;
+        }
+      }
 }
 
 // (3) The pair parts where the front ball's deceleration falls below the rear's. The rear ball slides at V along
