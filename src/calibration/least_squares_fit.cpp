@@ -306,7 +306,7 @@ Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
   std::transform(parameters.begin(), parameters.end(), start.begin(), [](const FitParameter& p) { return p.start; });
   Eigen::VectorXd r;
   if (!evaluate(model, start, r))
-    return Error{ErrorCode::NumericalFailure, "parameters", "the model cannot be evaluated at the start"};
+    return Error{ErrorKind::NumericalFailure, "parameters", "the model cannot be evaluated at the start"};
 
   LocalFit best, candidate;
   bool found = false;
@@ -323,7 +323,7 @@ Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
       found = true;
     }
   if (!found)
-    return Error{ErrorCode::NumericalFailure, "parameters", "the model cannot be evaluated along the fit"};
+    return Error{ErrorKind::NumericalFailure, "parameters", "the model cannot be evaluated along the fit"};
   FitResult result = report(parameters, best);
   result.initial_cost = 0.5 * r.squaredNorm();
   if (model.secondsLeft() <= 0.0)

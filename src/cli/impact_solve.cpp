@@ -10,7 +10,7 @@ namespace
 {
 int run()
 {
-  using billiard_shot_planner::ErrorCode;
+  using billiard_shot_planner::ErrorKind;
   const std::string text((std::istreambuf_iterator<char>(std::cin)), std::istreambuf_iterator<char>());
   const nlohmann::json request = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (request.is_discarded())
@@ -23,8 +23,8 @@ int run()
   {
     const auto& error = result.error();
     std::cerr << "impact_solve: " << toString(error.code) << ": " << error.describe() << "\n";
-    const bool bad_input = error.code == ErrorCode::InvalidArgument || error.code == ErrorCode::InvalidShot ||
-                           error.code == ErrorCode::NoApproachingContact;
+    const bool bad_input = error.code == ErrorKind::InvalidArgument || error.code == ErrorKind::InvalidShot ||
+                           error.code == ErrorKind::NoApproachingContact;
     return bad_input ? 2 : 1;
   }
   std::cout << result.value().dump(2) << "\n";

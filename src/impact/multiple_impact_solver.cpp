@@ -139,7 +139,7 @@ private:
   Status countEvent()
   {
     if (++event_count_ > options_.max_events)
-      return Error{ErrorCode::EventLimitExceeded, "",
+      return Error{ErrorKind::EventLimitExceeded, "",
                    "the state sequence did not end within " + std::to_string(options_.max_events) + " events"};
     return checkClock();
   }
@@ -150,7 +150,7 @@ private:
   {
     if (std::chrono::steady_clock::now() <= deadline_)
       return {};
-    return Error{ErrorCode::TimeLimitExceeded, "",
+    return Error{ErrorKind::TimeLimitExceeded, "",
                  "the impact did not end within " + formatNumber(options_.max_seconds) + " s (" +
                      std::to_string(event_count_) + " events, " + std::to_string(step_count_) + " integrator steps)"};
   }
@@ -318,7 +318,7 @@ private:
 
   Error stepLimitError() const
   {
-    return Error{ErrorCode::StepLimitExceeded, "",
+    return Error{ErrorKind::StepLimitExceeded, "",
                  "the impact did not end within " + std::to_string(options_.max_steps) + " integrator steps"};
   }
 
@@ -462,13 +462,13 @@ Expected<ImpactResult> solveMultipleImpact(const ImpactProblem& problem, const S
     auto result = detail::ImpactSolver(problem, options).run();
     // An answer never carries NaN or infinity: a failure the checks above did not foresee is reported as one.
     if (result && !(result.value().velocity.allFinite() && std::isfinite(result.value().final_kinetic_energy)))
-      return Error{ErrorCode::NumericalFailure, "", "numerical failure: the final velocities are not finite"};
+      return Error{ErrorKind::NumericalFailure, "", "numerical failure: the final velocities are not finite"};
     return result;
   }
   catch (const std::exception& e)
   {
     // Odeint signals a step size collapse, and Boost.Math a failed bracket, by exceptions.
-    return Error{ErrorCode::NumericalFailure, "", std::string("numerical failure: ") + e.what()};
+    return Error{ErrorKind::NumericalFailure, "", std::string("numerical failure: ") + e.what()};
   }
 }
 

@@ -3,24 +3,26 @@
 
 namespace billiard_shot_planner
 {
-const char* toString(ErrorCode code)
+const char* toString(ErrorKind code)
 {
   switch (code)
   {
-    case ErrorCode::InvalidArgument:
+    case ErrorKind::InvalidArgument:
       return "invalid_argument";
-    case ErrorCode::NoApproachingContact:
+    case ErrorKind::NoApproachingContact:
       return "no_approaching_contact";
-    case ErrorCode::InvalidShot:
+    case ErrorKind::InvalidShot:
       return "invalid_shot";
-    case ErrorCode::EventLimitExceeded:
+    case ErrorKind::EventLimitExceeded:
       return "event_limit_exceeded";
-    case ErrorCode::StepLimitExceeded:
+    case ErrorKind::StepLimitExceeded:
       return "step_limit_exceeded";
-    case ErrorCode::TimeLimitExceeded:
+    case ErrorKind::TimeLimitExceeded:
       return "time_limit_exceeded";
-    case ErrorCode::NumericalFailure:
+    case ErrorKind::NumericalFailure:
       return "numerical_failure";
+    case ErrorKind::Unavailable:
+      return "unavailable";
   }
   return "unknown";
 }

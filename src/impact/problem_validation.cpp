@@ -88,7 +88,7 @@ Status validate(const ImpactProblem& problem)
     approaching = approaching || contact.normal.dot(problem.velocity) < 0.0;
   }
   if (!approaching)
-    return Error{ErrorCode::NoApproachingContact, "velocity",
+    return Error{ErrorKind::NoApproachingContact, "velocity",
                  "no contact is approaching (every normal velocity is >= 0): there is no impact"};
   return {};
 }

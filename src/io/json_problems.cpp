@@ -67,7 +67,7 @@ Expected<json> finiteAnswer(Expected<json> answer)
   if (!answer)
     return answer;
   if (auto path = nonFinitePath(answer.value(), ""))
-    return Error{ErrorCode::NumericalFailure, *path, "the answer is not finite here (a numerical failure)"};
+    return Error{ErrorKind::NumericalFailure, *path, "the answer is not finite here (a numerical failure)"};
   return answer;
 }
 

@@ -247,7 +247,7 @@ Expected<SolverOptions> BallMover::impactOptions() const
 {
   const double left = std::chrono::duration<double>(deadline_ - std::chrono::steady_clock::now()).count();
   if (!(left > 0.0))
-    return Error{ErrorCode::TimeLimitExceeded, "",
+    return Error{ErrorKind::TimeLimitExceeded, "",
                  "the trajectory did not end within " + formatNumber(p_.impact.max_seconds) + " s (" +
                      std::to_string(trajectory_.events.size()) + " events)"};
   SolverOptions options = p_.impact;

@@ -45,7 +45,7 @@ Expected<std::vector<BallState>> resolveBallImpact(const std::vector<BallState>&
                                                    const SolverOptions& options)
 {
   auto solved = solve(collisionOf(touching, ball, table, contact), options);
-  if (!solved && solved.error().code == ErrorCode::NoApproachingContact)
+  if (!solved && solved.error().code == ErrorKind::NoApproachingContact)
     return touching;  // a graze within the touching tolerance: nothing presses, nothing changes
   if (!solved)
     return solved.error();

@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include "error_codes.hpp"
 #include "prediction_message.hpp"
 
 namespace billiard_shot_planner
@@ -45,8 +46,10 @@ CuePlan toMessage(const PlannedShot& shot, const std::string& frame)
 PlanShotResult toResult(const ShotPlan& plan, const std::string& frame, double spacing)
 {
   PlanShotResult result;
-  result.success = true;
-  result.message = "ok";
+  // Nothing that pots is not a plan: the action ends aborted with the closest attempt still in the result.
+  result.success = plan.found;
+  result.message = plan.found ? "ok" : "no shot found: " + plan.explanation;
+  result.error_code = errorCode(plan.found ? ErrorCode::SUCCESS : ErrorCode::NO_SHOT_FOUND);
   result.found = plan.found;
   result.explanation = plan.explanation;
   result.evaluations = plan.evaluations;

@@ -6,6 +6,7 @@
 
 #include "billiard_shot_planner/calibration/fit_parameter_bounds.hpp"
 #include "billiard_shot_planner/io/calibration_overlay.hpp"
+#include "error_codes.hpp"
 #include "parameter_names.hpp"
 
 namespace billiard_shot_planner
@@ -22,6 +23,7 @@ bool failWith(const Error& error, const char* service, Response& response)
 {
   response.success = false;
   response.message = error.describe();
+  response.error_code = errorCodeOf(error);
   ROS_WARN("%s: %s", service, response.message.c_str());
   return true;  // a refused request is an answer, not a failed call
 }
@@ -103,6 +105,7 @@ void fillAnswer(const TrackFit& fitted, std::size_t shots, FitCalibration::Respo
   response.overlay_yaml = calibrationOverlayYaml(fit, "fitted by shot_predictor ~fit_calibration");
   response.success = true;
   response.message = fit.message;
+  response.error_code = errorCode(ErrorCode::SUCCESS);
 }
 }  // namespace
 
@@ -190,6 +193,7 @@ bool ShotCalibrationServer::recordShot(RecordShot::Request& request, RecordShot:
     return failWith(index.error(), "record_shot", response);
   response.success = true;
   response.message = "ok";
+  response.error_code = errorCode(ErrorCode::SUCCESS);
   response.shot_index = static_cast<uint32_t>(index.value());
   response.shots_recorded = static_cast<uint32_t>(recorder_.shots().size());
   return true;

@@ -1,6 +1,7 @@
 #include "shot_planner_server.hpp"
 
 #include "billiard_shot_planner/core/validation.hpp"
+#include "error_codes.hpp"
 #include "plan_message.hpp"
 #include "trajectory_markers.hpp"
 
@@ -13,6 +14,7 @@ PlanShotResult failure(const Error& error)
   PlanShotResult result;
   result.success = false;
   result.message = error.describe();
+  result.error_code = errorCodeOf(error);
   return result;
 }
 
@@ -118,13 +120,15 @@ void ShotPlannerServer::execute(const PlanShotGoalConstPtr& goal)
   };
   hooks.stop = [this]() { return action_server_.isPreemptRequested() || !ros::ok(); };
   const PlanShotResult result = plan(*goal, hooks);
-  if (!result.success)
+  // A valid goal that was stopped ends preempted with the best so far, whether or not it pots.
+  const bool planned = result.success || result.error_code.val == ErrorCode::NO_SHOT_FOUND;
+  if (planned && action_server_.isPreemptRequested())
+    action_server_.setPreempted(result, "preempted: the best plan found so far");
+  else if (!result.success)
   {
     ROS_WARN("plan_shot: %s", result.message.c_str());
     action_server_.setAborted(result, result.message);
   }
-  else if (action_server_.isPreemptRequested())
-    action_server_.setPreempted(result, "preempted: the best plan found so far");
   else
     action_server_.setSucceeded(result);
 }

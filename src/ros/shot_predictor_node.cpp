@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "billiard_shot_planner/core/validation.hpp"
+#include "error_codes.hpp"
 #include "parameter_names.hpp"
 #include "prediction_message.hpp"
 #include "trajectory_markers.hpp"
@@ -160,7 +161,7 @@ Expected<Eigen::Vector2d> ShotPredictorNode::placePoint(const geometry_msgs::Poi
   }
   catch (const tf2::TransformException& e)
   {
-    return invalidArgument(field + ".header.frame_id", std::string("no transform to the table frame: ") + e.what());
+    return transformError(field + ".header.frame_id", e);
   }
 }
 
@@ -235,7 +236,7 @@ Expected<std::vector<TableBall>> ShotPredictorNode::placeTable(const TableState&
     }
     catch (const tf2::TransformException& e)
     {
-      return invalidArgument("table.header.frame_id", std::string("no transform to the table frame: ") + e.what());
+      return transformError("table.header.frame_id", e);
     }
     TableBall ball{table.balls[i].id, {}};
     ball.state.position = Eigen::Vector3d(point.point.x, point.point.y, 0.0);
@@ -253,7 +254,7 @@ Expected<CuePlacement> ShotPredictorNode::placeCuePose(const geometry_msgs::Pose
   }
   catch (const tf2::TransformException& e)
   {
-    return invalidArgument("cue_pose.header.frame_id", std::string("no transform to the table frame: ") + e.what());
+    return transformError("cue_pose.header.frame_id", e);
   }
   const auto& q = pose.pose.orientation;
   CuePlacement cue;
@@ -281,6 +282,7 @@ bool ShotPredictorNode::predict(PredictShot::Request& request, PredictShot::Resp
   {
     response.success = false;
     response.message = error.describe();
+    response.error_code = errorCodeOf(error);
     ROS_WARN("predict_shot: %s", response.message.c_str());
     return true;  // a domain error is an answer, not a failed call
   };
@@ -307,6 +309,7 @@ bool ShotPredictorNode::predict(PredictShot::Request& request, PredictShot::Resp
     return fail(outcome.error());
   response.success = true;
   response.message = "ok";
+  response.error_code = errorCode(ErrorCode::SUCCESS);
   response.prediction = toMessage(outcome.value(), settings_.target_frame, settings_.sample_spacing);
   response.prediction.header.stamp = ros::Time::now();
   response.ball_velocity = response.prediction.ball_velocity;

@@ -18,7 +18,7 @@ Status check(const BallBallTable& c)
       !status)
     return status;
   if (c.v0 >= 0.0)
-    return Error{ErrorCode::NoApproachingContact, "v0", "must be < 0 (ball 1 moving down onto ball 2)"};
+    return Error{ErrorKind::NoApproachingContact, "v0", "must be < 0 (ball 1 moving down onto ball 2)"};
   return {};
 }
 

@@ -171,10 +171,10 @@ Expected<BallCollisionBodies> configure(const BallCollision& c)
     return status.error();
   BallCollisionBodies bodies = assembleBodies(c);
   if (bodies.pairs.empty())
-    return Error{ErrorCode::NoApproachingContact, "balls",
+    return Error{ErrorKind::NoApproachingContact, "balls",
                  "no two balls touch (centres within 2 ball_radius + touching_tolerance): there is no collision"};
   if (!anyContactApproaches(bodies.problem))
-    return Error{ErrorCode::NoApproachingContact, "balls",
+    return Error{ErrorKind::NoApproachingContact, "balls",
                  "no touching pair approaches and no ball moves into the cloth or a cushion: there is no collision"};
   return bodies;
 }

@@ -29,7 +29,7 @@ Expected<BallTableImpactResult> solve(const BallTableImpact& impact, const Solve
   if (Status status = check(impact); !status)
     return status.error();
   if (!(impact.velocity.z() < 0.0))
-    return Error{ErrorCode::NoApproachingContact, "velocity", "the ball must move down onto the table (v_z < 0)"};
+    return Error{ErrorKind::NoApproachingContact, "velocity", "the ball must move down onto the table (v_z < 0)"};
   auto solved = solveMultipleImpact(makeImpactProblem(impact), options);
   if (!solved)
     return solved.error();

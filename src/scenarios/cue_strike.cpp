@@ -18,7 +18,7 @@ Status checkApproach(const Eigen::Vector3d& n, const Eigen::Vector3d& c)
 {
   if (!(n.dot(c) < 0.0))
     return Error{
-        ErrorCode::InvalidShot, "cue_direction",
+        ErrorKind::InvalidShot, "cue_direction",
         "the cue does not approach the ball at the hit point (n.c = " + formatNumber(n.dot(c)) + " must be < 0)"};
   return {};
 }
@@ -136,18 +136,18 @@ Expected<Eigen::Vector3d> hitNormal(const Eigen::Vector3d& axis_point, const Eig
   const double b = c.dot(offset);
   const double discriminant = b * b - (offset.squaredNorm() - ball_radius * ball_radius);
   if (discriminant < 0.0)
-    return Error{ErrorCode::InvalidShot, "cue_pose",
+    return Error{ErrorKind::InvalidShot, "cue_pose",
                  "the cue axis misses the ball (closest approach " +
                      formatNumber(std::sqrt(offset.squaredNorm() - b * b)) + " m from its centre)"};
   // The tip may touch the ball or be slightly into it from round-off (a hundredth of the radius).
   const double depth = ball_radius - offset.norm();
   if (depth > 0.01 * ball_radius)
-    return Error{ErrorCode::InvalidShot, "cue_pose",
+    return Error{ErrorKind::InvalidShot, "cue_pose",
                  "the cue tip is inside the ball (" + formatNumber(offset.norm()) + " m from its centre, radius " +
                      formatNumber(ball_radius) + " m)"};
   const double distance = -b - std::sqrt(discriminant);
   if (distance < -0.01 * ball_radius)
-    return Error{ErrorCode::InvalidShot, "cue_pose", "the ball is behind the cue tip (the cue points away)"};
+    return Error{ErrorKind::InvalidShot, "cue_pose", "the ball is behind the cue tip (the cue points away)"};
   return Eigen::Vector3d((axis_point + distance * c - ball_centre) / ball_radius);
 }
 

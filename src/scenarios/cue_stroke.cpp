@@ -26,7 +26,7 @@ Expected<StrokeGeometry> strokeGeometry(const CueStroke& stroke)
   geometry.hit_normal = stroke.a * right + stroke.b * up - std::sqrt(1.0 - across) * forward;
   const double approach = geometry.hit_normal.dot(geometry.cue_direction);
   if (!(approach < 0.0))
-    return Error{ErrorCode::InvalidShot, "theta",
+    return Error{ErrorKind::InvalidShot, "theta",
                  "at this elevation the cue cannot reach the hit point (a, b) without passing through the ball "
                  "(n.c = " +
                      formatNumber(approach) + " must be < 0)"};

@@ -184,5 +184,5 @@ TEST(LeastSquaresFit, BadInputIsRefusedNamingTheField)
   const auto failing =
       bsp::fitLeastSquares({{"a", 0.0}}, 4, [](const std::vector<double>&, Eigen::VectorXd&) { return false; });
   ASSERT_FALSE(failing.ok());
-  EXPECT_EQ(failing.error().code, bsp::ErrorCode::NumericalFailure);
+  EXPECT_EQ(failing.error().code, bsp::ErrorKind::NumericalFailure);
 }

@@ -27,11 +27,11 @@ bsp::ImpactProblem validProblem()
 struct SpoiledProblem
 {
   const char* field;
-  bsp::ErrorCode code;
+  bsp::ErrorKind code;
   std::function<void(bsp::ImpactProblem&)> spoil;
 };
 
-void expectError(const bsp::ImpactProblem& problem, bsp::ErrorCode code, const std::string& field)
+void expectError(const bsp::ImpactProblem& problem, bsp::ErrorKind code, const std::string& field)
 {
   const auto result = bsp::solveMultipleImpact(problem);
   ASSERT_FALSE(result.ok()) << "expected an error on " << field;
@@ -43,7 +43,7 @@ void expectError(const bsp::ImpactProblem& problem, bsp::ErrorCode code, const s
 
 TEST(BadInput, EngineNamesTheField)
 {
-  using E = bsp::ErrorCode;
+  using E = bsp::ErrorKind;
   const std::vector<SpoiledProblem> cases = {
       {"mass_matrix", E::InvalidArgument, [](bsp::ImpactProblem& p) { p.mass_matrix(0, 0) = NaN; }},
       {"mass_matrix", E::InvalidArgument, [](bsp::ImpactProblem& p) { p.mass_matrix(1, 1) = -1.0; }},
@@ -91,7 +91,7 @@ TEST(BadInput, ScenarioBuildersNameTheirOwnFields)
   EXPECT_EQ(bsp::solve(c).error().field, "stiffness_ratio");
   c = {};
   c.v0 = 0.5;
-  EXPECT_EQ(bsp::solve(c).error().code, bsp::ErrorCode::NoApproachingContact);
+  EXPECT_EQ(bsp::solve(c).error().code, bsp::ErrorKind::NoApproachingContact);
 
   bsp::BallChain chain{{1.0, 1.0}, {1.0, 0.0}, {1.0}, {1.0}, false};
   chain.stiffness = {1.0, 2.0};
@@ -101,7 +101,7 @@ TEST(BadInput, ScenarioBuildersNameTheirOwnFields)
   EXPECT_EQ(bsp::solve(chain).error().field, "masses[1]");
   chain.masses[1] = 1.0;
   chain.velocities = {0.0, 1.0};
-  EXPECT_EQ(bsp::solve(chain).error().code, bsp::ErrorCode::NoApproachingContact);
+  EXPECT_EQ(bsp::solve(chain).error().code, bsp::ErrorKind::NoApproachingContact);
 }
 
 TEST(BadInput, EventLimitStopsInsteadOfLooping)
@@ -112,7 +112,7 @@ TEST(BadInput, EventLimitStopsInsteadOfLooping)
   options.max_events = 2;
   const auto result = bsp::solve(c, options);
   ASSERT_FALSE(result.ok());
-  EXPECT_EQ(result.error().code, bsp::ErrorCode::EventLimitExceeded);
+  EXPECT_EQ(result.error().code, bsp::ErrorKind::EventLimitExceeded);
 }
 
 namespace
@@ -121,7 +121,7 @@ void expectOptionError(const bsp::SolverOptions& options, const std::string& fie
 {
   const auto result = bsp::solveMultipleImpact(validProblem(), options);
   ASSERT_FALSE(result.ok()) << "expected an error on " << field;
-  EXPECT_EQ(result.error().code, bsp::ErrorCode::InvalidArgument);
+  EXPECT_EQ(result.error().code, bsp::ErrorKind::InvalidArgument);
   EXPECT_EQ(result.error().field, field);
   EXPECT_FALSE(result.error().message.empty());
 }

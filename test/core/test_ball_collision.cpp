@@ -583,14 +583,14 @@ TEST(BallCollision, BreakOfARackedPackIsOneImpact)
 
 TEST(BallCollision, RefusesBadInputNamingTheField)
 {
-  const auto refused = [](const bsp::BallCollision& c, const char* field, bsp::ErrorCode code)
+  const auto refused = [](const bsp::BallCollision& c, const char* field, bsp::ErrorKind code)
   {
     const auto result = bsp::solve(c);
     ASSERT_FALSE(result.ok()) << field;
     EXPECT_EQ(result.error().field, field) << result.error().describe();
     EXPECT_EQ(result.error().code, code) << result.error().describe();
   };
-  const auto invalid = bsp::ErrorCode::InvalidArgument;
+  const auto invalid = bsp::ErrorKind::InvalidArgument;
   bsp::BallCollision c = twoBalls(0.3, 1.0);
   {
     bsp::BallCollision one = c;
@@ -631,10 +631,10 @@ TEST(BallCollision, RefusesBadInputNamingTheField)
   // Nothing to collide: no pair touches (a gap of twice the tolerance), or pairs touch and none approaches.
   bad = c;
   bad.balls[1].position *= (2.0 * R + 2.0 * c.touching_tolerance) / (2.0 * R);
-  refused(bad, "balls", bsp::ErrorCode::NoApproachingContact);
+  refused(bad, "balls", bsp::ErrorKind::NoApproachingContact);
   bad = c;
   bad.balls[0].velocity = Eigen::Vector3d(-1.0, 0.0, 0.0);
-  refused(bad, "balls", bsp::ErrorCode::NoApproachingContact);
+  refused(bad, "balls", bsp::ErrorKind::NoApproachingContact);
   // Within the tolerance a gap or an overlap is a contact.
   bsp::BallCollision near = c;
   near.balls[1].position *= (2.0 * R + 0.5 * c.touching_tolerance) / (2.0 * R);

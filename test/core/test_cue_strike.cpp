@@ -424,10 +424,10 @@ TEST(CueStrikeBadInput, InvalidShotsAndFields)
   const Eigen::Vector3d c(-0.2761, -0.1388, -0.9511);
   auto s = masse(c);
   s.cue_direction = -c;  // pointing away
-  EXPECT_EQ(bsp::solve(s).error().code, bsp::ErrorCode::InvalidShot);
+  EXPECT_EQ(bsp::solve(s).error().code, bsp::ErrorKind::InvalidShot);
   s = masse(c);
   s.hit_normal = {0.6, 0.0, -0.8};  // below the equator, and the cue pointing down into the ball from above
-  EXPECT_EQ(bsp::solve(s).error().code, bsp::ErrorCode::InvalidShot);
+  EXPECT_EQ(bsp::solve(s).error().code, bsp::ErrorKind::InvalidShot);
   s = masse(c);
   s.cue_end_mass = -1.0;
   EXPECT_EQ(bsp::solve(s).error().field, "cue_end_mass");
@@ -464,8 +464,8 @@ TEST(CueStrikeGeometry, HitNormalFromTheCueAxis)
   EXPECT_LT((normal.value() - n.normalized()).norm(), 1e-9);
   // An axis that passes 2 radii from the centre misses.
   const Eigen::Vector3d off = centre + Eigen::Vector3d(0, 0, 2 * r) - 0.05 * Eigen::Vector3d::UnitX();
-  EXPECT_EQ(bsp::hitNormal(off, Eigen::Vector3d::UnitX(), centre, r).error().code, bsp::ErrorCode::InvalidShot);
+  EXPECT_EQ(bsp::hitNormal(off, Eigen::Vector3d::UnitX(), centre, r).error().code, bsp::ErrorKind::InvalidShot);
   // The ball behind the cue.
   EXPECT_EQ(bsp::hitNormal(centre + Eigen::Vector3d(0.1, 0, 0), Eigen::Vector3d::UnitX(), centre, r).error().code,
-            bsp::ErrorCode::InvalidShot);
+            bsp::ErrorKind::InvalidShot);
 }

@@ -311,7 +311,7 @@ TEST(CueStroke, ImpossibleStrokesAndBadEndMassesAreRefused)
   // Off the ball, or not reachable at that elevation without passing through it.
   EXPECT_EQ(bsp::strokeGeometry({0.0, 0.0, 0.8, 0.6}).error().field, "a");
   EXPECT_EQ(bsp::strokeGeometry({0.0, radians(95.0), 0.0, 0.0}).error().field, "theta");
-  EXPECT_EQ(bsp::strokeGeometry({0.0, radians(70.0), 0.0, -0.5}).error().code, bsp::ErrorCode::InvalidShot);
+  EXPECT_EQ(bsp::strokeGeometry({0.0, radians(70.0), 0.0, -0.5}).error().code, bsp::ErrorKind::InvalidShot);
   EXPECT_EQ(bsp::strokeGeometry({std::nan(""), 0.0, 0.0, 0.0}).error().field, "phi");
   // A tip inside the ball is its own mistake, not a ball behind the tip.
   const Eigen::Vector3d centre(0.0, 0.0, BALL_RADIUS);

@@ -315,7 +315,7 @@ TEST(EnergyNeverRises, RandomCollisionsOverExtremeRanges)
       chain.restitution.push_back(restitution(1e-9));
     }
     const auto result = bsp::solve(chain, slowMachineBound());
-    if (!result.ok() && result.error().code == bsp::ErrorCode::InvalidArgument)
+    if (!result.ok() && result.error().code == bsp::ErrorKind::InvalidArgument)
       continue;  // nothing approaches
     EXPECT_TRUE(result.ok()) << "chain " << k << ": " << result.error().describe();
     if (result.ok())

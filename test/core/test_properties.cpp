@@ -76,8 +76,8 @@ double ballEnergy(double mass, double radius, const Eigen::Vector3d& v, const Ei
 /// properties allow.
 bool endedOnABound(const bsp::Error& error)
 {
-  return error.code == bsp::ErrorCode::EventLimitExceeded || error.code == bsp::ErrorCode::StepLimitExceeded ||
-         error.code == bsp::ErrorCode::TimeLimitExceeded;
+  return error.code == bsp::ErrorKind::EventLimitExceeded || error.code == bsp::ErrorKind::StepLimitExceeded ||
+         error.code == bsp::ErrorKind::TimeLimitExceeded;
 }
 
 void expectEnergyDoesNotRise(const bsp::ImpactResult& impact)
@@ -109,7 +109,7 @@ TEST(Properties, ChainsConserveMomentumAndNeverGainEnergy)
         const auto result = bsp::solve(chain);
         if (!result.ok())
         {
-          EXPECT_TRUE(result.error().code == bsp::ErrorCode::NoApproachingContact || endedOnABound(result.error()))
+          EXPECT_TRUE(result.error().code == bsp::ErrorKind::NoApproachingContact || endedOnABound(result.error()))
               << result.error().describe();
           return;
         }
@@ -199,7 +199,7 @@ TEST(Properties, CushionHitsLeaveTheCushionAndNeverGainEnergy)
         const auto result = bsp::solve(hit);
         if (!result.ok())
         {
-          EXPECT_TRUE(result.error().code == bsp::ErrorCode::NoApproachingContact || endedOnABound(result.error()))
+          EXPECT_TRUE(result.error().code == bsp::ErrorKind::NoApproachingContact || endedOnABound(result.error()))
               << result.error().describe();
           return;
         }

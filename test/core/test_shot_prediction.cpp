@@ -38,7 +38,7 @@ TEST(ShotPrediction, RandomCuePlacementsArePredictedOrRefusedAsInvalidShots)
     const auto outcome = bsp::predictShot(cue, configuration);
     if (!outcome.ok())
     {
-      EXPECT_EQ(outcome.error().code, bsp::ErrorCode::InvalidShot) << k << ": " << outcome.error().describe();
+      EXPECT_EQ(outcome.error().code, bsp::ErrorKind::InvalidShot) << k << ": " << outcome.error().describe();
       continue;
     }
     ++predicted;

@@ -13,7 +13,7 @@ import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
 
-from billiard_shot_planner.msg import Ball, PlanShotAction, PlanShotGoal
+from billiard_shot_planner.msg import Ball, ErrorCode, PlanShotAction, PlanShotGoal
 from billiard_shot_planner.srv import PlanShotNow, PredictShot, PredictShotRequest
 
 NODE = "/shot_predictor/"
@@ -68,6 +68,7 @@ class PlanShotTest(unittest.TestCase):
         state, result, feedback = self.run_goal(straight_in_goal())
         self.assertEqual(state, GoalStatus.SUCCEEDED, result.message)
         self.assertTrue(result.success and result.found, result.explanation)
+        self.assertEqual(result.error_code.val, ErrorCode.SUCCESS)
         self.assertEqual(result.plan.target, "one")
         self.assertEqual(result.plan.pocket, TOP_RIGHT)
         self.assertTrue(result.plan.confidence_low <= result.plan.success_probability <= result.plan.confidence_high)
@@ -123,7 +124,22 @@ class PlanShotTest(unittest.TestCase):
             state, result, _ = self.run_goal(goal)
             self.assertEqual(state, GoalStatus.ABORTED, field)
             self.assertFalse(result.success)
+            self.assertEqual(result.error_code.val, ErrorCode.INVALID_ARGUMENT, field)
             self.assertIn(field, result.message)
+
+    def test_a_goal_that_pots_nothing_is_aborted_with_the_closest_attempt(self):
+        """The straight-in shot with the cue limited to 0.1 m/s: the object ball leaves at most at about 0.13 m/s
+        and rolls at most v^2 / (2 mu_r g) = 0.09 m against the 0.53 m to the pocket, so nothing pots. The action
+        ends aborted with NO_SHOT_FOUND, and the result still explains why."""
+        goal = straight_in_goal()
+        goal.budget = 1.0
+        goal.override_names = ["planning/limits/min_speed", "planning/limits/max_speed"]
+        goal.override_values = [0.05, 0.1]
+        state, result, _ = self.run_goal(goal)
+        self.assertEqual(state, GoalStatus.ABORTED, result.message)
+        self.assertFalse(result.success or result.found)
+        self.assertEqual(result.error_code.val, ErrorCode.NO_SHOT_FOUND)
+        self.assertTrue(result.explanation)
 
     def test_the_service_answers_the_same_goals(self):
         answer = self.plan_now(straight_in_goal()).result

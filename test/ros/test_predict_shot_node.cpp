@@ -52,6 +52,7 @@ TEST_F(PredictShotNode, AnswerEqualsTheCoreLibrary)
 {
   const auto response = call(toRequest(shot_fixtures::masse()));
   ASSERT_TRUE(response.success) << response.message;
+  EXPECT_EQ(response.error_code.val, bsp::ErrorCode::SUCCESS);
   // The node computes the cue direction from the quaternion; the core test uses the same placement.
   bsp::CuePlacement cue = shot_fixtures::masse();
   const auto& o = toRequest(cue).cue_pose.pose.orientation;
@@ -99,6 +100,7 @@ TEST_F(PredictShotNode, BadInputIsAnsweredWithAReason)
     const char* what;
     bsp::PredictShot::Request request;
     const char* message;
+    int32_t code = bsp::ErrorCode::INVALID_ARGUMENT;  ///< msg/ErrorCode.msg
   };
   std::vector<Case> cases;
   auto base = toRequest(shot_fixtures::masse());
@@ -123,7 +125,7 @@ TEST_F(PredictShotNode, BadInputIsAnsweredWithAReason)
                   0.05 * cue.direction;
         return cue;
       }());
-  cases.push_back({"cue pointing away", r, "behind the cue"});
+  cases.push_back({"cue pointing away", r, "behind the cue", bsp::ErrorCode::INVALID_SHOT});
   r = toRequest(
       []
       {
@@ -131,7 +133,7 @@ TEST_F(PredictShotNode, BadInputIsAnsweredWithAReason)
         cue.tip = Eigen::Vector3d(cue.ball.x(), cue.ball.y(), 0.0286) - 0.01 * cue.direction;
         return cue;
       }());
-  cases.push_back({"tip inside the ball", r, "inside the ball"});
+  cases.push_back({"tip inside the ball", r, "inside the ball", bsp::ErrorCode::INVALID_SHOT});
   r = toRequest(
       []
       {
@@ -139,7 +141,7 @@ TEST_F(PredictShotNode, BadInputIsAnsweredWithAReason)
         cue.tip.y() += 0.2;
         return cue;
       }());
-  cases.push_back({"axis misses the ball", r, "misses the ball"});
+  cases.push_back({"axis misses the ball", r, "misses the ball", bsp::ErrorCode::INVALID_SHOT});
   r = toRequest(
       []
       {
@@ -151,7 +153,7 @@ TEST_F(PredictShotNode, BadInputIsAnsweredWithAReason)
   cases.push_back({"ball outside the table", r, "off the table"});
   r = base;
   r.cue_pose.header.frame_id = "no_such_frame";
-  cases.push_back({"unknown frame", r, "cue_pose.header.frame_id"});
+  cases.push_back({"unknown frame", r, "cue_pose.header.frame_id", bsp::ErrorCode::TRANSFORM_FAILED});
   r = base;
   r.ball_position.header.frame_id = "";
   cases.push_back({"empty frame", r, "ball_position.header.frame_id"});
@@ -167,6 +169,7 @@ TEST_F(PredictShotNode, BadInputIsAnsweredWithAReason)
   {
     const auto response = call(c.request);
     EXPECT_FALSE(response.success) << c.what;
+    EXPECT_EQ(response.error_code.val, c.code) << c.what << ": " << response.message;
     EXPECT_NE(response.message.find(c.message), std::string::npos) << c.what << ": " << response.message;
   }
 }

@@ -7,7 +7,7 @@
 namespace billiard_shot_planner
 {
 /// What kind of failure a core call reports. Callers branch on the code; the message is for people.
-enum class ErrorCode
+enum class ErrorKind
 {
   InvalidArgument,       ///< a field is NaN, infinite, out of range or inconsistent
   NoApproachingContact,  ///< nothing collides: no contact has a negative normal velocity
@@ -16,14 +16,15 @@ enum class ErrorCode
   StepLimitExceeded,     ///< the integrator did not finish within the configured number of steps
   TimeLimitExceeded,     ///< the call did not finish within its wall-clock budget
   NumericalFailure,      ///< the integrator or a root finder failed
+  Unavailable,           ///< an input the call needs is not available (yet): a retry may succeed
 };
 
-const char* toString(ErrorCode code);
+const char* toString(ErrorKind code);
 
 /// A typed error: the code, the offending field (dotted path, may be empty) and a readable message.
 struct Error
 {
-  ErrorCode code = ErrorCode::InvalidArgument;
+  ErrorKind code = ErrorKind::InvalidArgument;
   std::string field;
   std::string message;
 
@@ -33,7 +34,7 @@ struct Error
 
 inline Error invalidArgument(std::string field, std::string message)
 {
-  return Error{ErrorCode::InvalidArgument, std::move(field), std::move(message)};
+  return Error{ErrorKind::InvalidArgument, std::move(field), std::move(message)};
 }
 
 /// A value or an Error. The core library reports every expected failure through this type and never throws

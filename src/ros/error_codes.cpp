@@ -1,0 +1,51 @@
+#include "error_codes.hpp"
+
+namespace billiard_shot_planner
+{
+namespace
+{
+int32_t valueOf(ErrorKind kind)
+{
+  switch (kind)
+  {
+    case ErrorKind::InvalidArgument:
+      return ErrorCode::INVALID_ARGUMENT;
+    case ErrorKind::NoApproachingContact:
+      return ErrorCode::NO_APPROACHING_CONTACT;
+    case ErrorKind::InvalidShot:
+      return ErrorCode::INVALID_SHOT;
+    case ErrorKind::EventLimitExceeded:
+      return ErrorCode::EVENT_LIMIT;
+    case ErrorKind::StepLimitExceeded:
+      return ErrorCode::STEP_LIMIT;
+    case ErrorKind::TimeLimitExceeded:
+      return ErrorCode::TIME_LIMIT;
+    case ErrorKind::NumericalFailure:
+      return ErrorCode::NUMERICAL_FAILURE;
+    case ErrorKind::Unavailable:
+      return ErrorCode::TRANSFORM_FAILED;
+  }
+  return ErrorCode::INVALID_ARGUMENT;
+}
+}  // namespace
+
+ErrorCode errorCode(int32_t val)
+{
+  ErrorCode code;
+  code.val = val;
+  return code;
+}
+
+Error transformError(const std::string& field, const tf2::TransformException& exception)
+{
+  const bool malformed = dynamic_cast<const tf2::InvalidArgumentException*>(&exception) != nullptr;
+  return Error{malformed ? ErrorKind::InvalidArgument : ErrorKind::Unavailable, field,
+               std::string("no transform to the table frame: ") + exception.what()};
+}
+
+ErrorCode errorCodeOf(const Error& error)
+{
+  return errorCode(valueOf(error.code));
+}
+
+}  // namespace billiard_shot_planner
