@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ball_contact_time.hpp"
 #include "phase_dynamics.hpp"
 
 namespace billiard_shot_planner
@@ -55,6 +56,36 @@ Response responseOf(const BallState& s, const Eigen::Vector2d& push, const BallP
     r.compliance = 5.0 / 7.0;
   }
   return r;  // at rest in the plane: held by the cloth until the push overcomes rolling resistance
+}
+
+/// A ball whose hop above the cloth (its height and what its upward speed adds) stays within LINK_EXCURSION is on
+/// the cloth: the limit's impact lifts a ball that the balls' rubbing contact pushes up, by far less (its speed near
+/// μ v, a few 1e-5 m/s, a hop of 1e-10 m). Dropping the hop only dissipates. Other balls are left in the air.
+BallState onCloth(BallState s, double radius, double gravity)
+{
+  const double rise = std::max(s.velocity.z(), 0.0);
+  if (s.position.z() - radius + rise * rise / (2.0 * gravity) > LINK_EXCURSION)
+    return s;
+  s.position.z() = radius;
+  s.velocity.z() = 0.0;
+  return s;
+}
+
+/// The pair with its gap closed: a link met at a graze (a gap within the touching tolerance) or carrying the round-off
+/// of its last step starts with the centres exactly `distance` apart, each ball moved by half the gap along the line
+/// of centres. A step that starts apart cannot be closed by its force where its free motion does not close it
+/// within the step (the force does not pull): the balls would end it approaching, which the next step's constant
+/// force overshoots into an overlap.
+std::array<BallState, 2> closed(BallState a, BallState b, double distance)
+{
+  const Eigen::Vector2d d = (b.position - a.position).head<2>();
+  const double gap = d.norm() - distance;
+  if (std::abs(gap) > BALL_TOUCHING_TOLERANCE)
+    return {a, b};
+  const Eigen::Vector2d shift = 0.5 * gap * d.normalized();
+  a.position.head<2>() += shift;
+  b.position.head<2>() -= shift;
+  return {a, b};
 }
 
 /// The pair's geometry and relative motion at the step's start.
@@ -197,10 +228,12 @@ bool isSequenceLimit(const PairPress& press)
   return press.press > 0.0 && press.approach * press.approach <= 2.0 * press.press * LINK_EXCURSION;
 }
 
-LinkStep linkStep(const BallState& a, const BallState& b, double t, const BallProperties& ball,
+LinkStep linkStep(const BallState& a_in, const BallState& b_in, double t, const BallProperties& ball,
                   const MotionParameters& p)
 {
   LinkStep step;
+  const auto [a, b] =
+      closed(onCloth(a_in, ball.radius, p.gravity), onCloth(b_in, ball.radius, p.gravity), 2.0 * ball.radius);
   const Relative rel = relativeOf(a, b);
   Response ra = responseOf(a, -rel.n, ball, p), rb = responseOf(b, rel.n, ball, p);
   if (ra.phase == MotionPhase::Airborne || rb.phase == MotionPhase::Airborne)

@@ -33,7 +33,9 @@ PairPress pairPress(const MotionSegment& a, const MotionSegment& b, double t);
 bool isSequenceLimit(const PairPress& press);
 
 /// One step of a linked pair: both balls' segments from the step's start (constant accelerations), its duration,
-/// and for each ball the phase that ends with the step (SlideToRoll, RollToSpin, SpinStop) or Rest for none.
+/// and for each ball the phase that ends with the step (SlideToRoll, RollToSpin, SpinStop) or Rest for none. The
+/// segments start on the cloth (a hop within LINK_EXCURSION dropped) and touching (a gap within the touching
+/// tolerance closed, half by each ball along the line of centres).
 /// `released`: the contact force would not press (or a ball is off the cloth); the balls move apart on their own.
 struct LinkStep
 {

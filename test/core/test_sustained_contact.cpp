@@ -13,11 +13,14 @@
 // The gap stays closed while (a_front − a_rear)·n = 0 (a pair on one line), which fixes F; F ≤ 0 lets it go.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "billiard_shot_planner/motion/table_simulation.hpp"
+#include "billiard_shot_planner/scenarios/cue_stroke.hpp"
+#include "billiard_shot_planner/shot/shot_prediction.hpp"
 
 namespace bsp = billiard_shot_planner;
 using Type = bsp::MotionEventType;
@@ -38,24 +41,25 @@ bsp::BallState at(double x, double y, Eigen::Vector3d v = Eigen::Vector3d::Zero(
 }
 
 /// Kinetic energy and the potential energy of a ball above the cloth (a hop after an impact).
-double energy(const bsp::BallState& s)
+double energy(const bsp::BallState& s, const bsp::BallProperties& ball)
 {
-  return 0.5 * BALL.mass * s.velocity.squaredNorm() + 0.2 * BALL.mass * R * R * s.angular_velocity.squaredNorm() +
-         BALL.mass * bsp::MotionParameters{}.gravity * (s.position.z() - R);
+  const double m = ball.mass, r = ball.radius;
+  return 0.5 * m * s.velocity.squaredNorm() + 0.2 * m * r * r * s.angular_velocity.squaredNorm() +
+         m * bsp::MotionParameters{}.gravity * (s.position.z() - r);
 }
 
-double tableEnergy(const bsp::TableTrajectory& run, double t)
+double tableEnergy(const bsp::TableTrajectory& run, double t, const bsp::BallProperties& ball)
 {
   double sum = 0.0;
   for (const bsp::BallTrajectory& b : run.balls)
     if (b.outcome != bsp::MotionOutcome::Pocketed || t < b.duration())
-      sum += energy(b.at(t));
+      sum += energy(b.at(t), ball);
   return sum;
 }
 
-double gap(const bsp::TableTrajectory& run, int i, int j, double t)
+double gap(const bsp::TableTrajectory& run, int i, int j, double t, double radius = R)
 {
-  return (run.balls[i].at(t).position - run.balls[j].at(t).position).norm() - 2.0 * R;
+  return (run.balls[i].at(t).position - run.balls[j].at(t).position).norm() - 2.0 * radius;
 }
 
 std::size_t eventCount(const bsp::TableTrajectory& run)
@@ -66,12 +70,12 @@ std::size_t eventCount(const bsp::TableTrajectory& run)
   return n;
 }
 
-void expectEnergyNeverRises(const bsp::TableTrajectory& run, double spacing)
+void expectEnergyNeverRises(const bsp::TableTrajectory& run, double spacing, const bsp::BallProperties& ball = BALL)
 {
-  double before = tableEnergy(run, 0.0);
+  double before = tableEnergy(run, 0.0, ball);
   for (double t = spacing; t <= run.duration(); t += spacing)
   {
-    const double now = tableEnergy(run, t);
+    const double now = tableEnergy(run, t, ball);
     EXPECT_LE(now, before + 1e-9 * (1.0 + before)) << "t " << t;
     before = now;
   }
@@ -83,6 +87,31 @@ const bsp::MotionEvent* firstEvent(const bsp::BallTrajectory& b, Type type)
     if (e.type == type)
       return &e;
   return nullptr;
+}
+
+/// A stroke on the ball at `ball` (predictShot's placement: the tip on the ball's surface at the hit point).
+bsp::CuePlacement strokeAt(const Eigen::Vector2d& ball, double radius, const bsp::CueStroke& s, double speed)
+{
+  const auto geometry = bsp::strokeGeometry(s);
+  EXPECT_TRUE(geometry.ok());
+  bsp::CuePlacement cue;
+  cue.ball = ball;
+  cue.direction = geometry.value().cue_direction;
+  cue.tip = Eigen::Vector3d(ball.x(), ball.y(), radius) + radius * geometry.value().hit_normal;
+  cue.speed = speed;
+  return cue;
+}
+
+/// impact_solve's table_shot example: its cue, its cue tip and cloth contacts, R = 0.028575 m.
+bsp::ShotConfiguration jammedRowConfiguration()
+{
+  bsp::ShotConfiguration c;
+  c.ball_radius = 0.028575;
+  c.cue_mass = 0.54;
+  c.cue_contact = {0.75, 0.7, 1.2};
+  c.table.cloth = {0.5, 0.2, 10.0};
+  c.stiffness_ratio = 0.8;
+  return c;
 }
 }  // namespace
 
@@ -230,4 +259,63 @@ TEST(SustainedContact, ThePairPartsWhereTheFrontBallDeceleratesLess)
   EXPECT_GT(gap(r, 0, 1, later), 1e-6);
   EXPECT_GT(gap(r, 0, 1, rear_rolls->time), gap(r, 0, 1, later));
   expectEnergyNeverRises(r, 1e-3);
+}
+
+// (4) A link met at a graze. The rear ball rolls at V into a front one 5e-10 m ahead (a gap within the touching
+// tolerance, 1e-9 m) that slides with a slip of 5e-5 m/s, gone within some 1e-5 s. They meet at once at zero
+// approach, pressed together: the sequence's limit. The link's first step, cut short by the front's roll, could not
+// close the gap (the contact force does not pull): the balls ended it approaching at 1.3e-5 m/s, the next step's
+// constant force closed the gap only at its end, overlapping by 3e-8 m on the way, and the pair then drifted apart
+// while linked. The link starts with the gap closed: the pair rolls on touching, as in (1).
+TEST(SustainedContact, ALinkMetAtAGrazeStartsClosed)
+{
+  const bsp::Table table;
+  const bsp::MotionParameters p;
+  const double V = 0.5, x0 = -0.8, slip = 5e-5;
+  const std::vector<bsp::TableBall> balls{{"rear", at(x0, 0.0, {V, 0, 0}, {0, V / R, 0})},
+                                          {"front", at(x0 + 2.0 * R + 5e-10, 0.0, {V, 0, 0}, {0, (V - slip) / R, 0})}};
+  const auto run = bsp::simulateTable(balls, BALL, table, p);
+  ASSERT_TRUE(run.ok()) << run.error().describe();
+  const bsp::TableTrajectory& r = run.value();
+  for (const bsp::BallTrajectory& b : r.balls)
+    EXPECT_EQ(b.outcome, bsp::MotionOutcome::Rest);
+  EXPECT_EQ(r.ball_impacts.size(), 1u);
+  const double both_rest = std::min(r.balls[0].duration(), r.balls[1].duration());
+  for (double t = 0.0; t <= both_rest; t += t < 0.02 ? 1e-5 : 1e-3)
+    EXPECT_NEAR(gap(r, 0, 1, t), 0.0, 1e-9) << "t " << t;
+  expectEnergyNeverRises(r, 1e-3);
+}
+
+// (5) The strike of a jammed row (the configuration of impact_solve's table_shot example with R = 0.028575 m): the
+// cue ball frozen to "one", frozen to "two", frozen to the +y rail, struck towards the rail (90°, 5° up, b = 0.3) as
+// one multiple impact. All three leave in −y; the cue ball comes back from the −y rail rolling and presses into
+// "one", which slides. The sequence's limit, the plastic impact, lifts the cue ball: the rubbing of the balls'
+// spins at their contact (the rolling ball's contact point runs down past the other's) pushes it up at 7e-5 m/s, a
+// hop of 2e-10 m. The link refused a ball off the cloth, the two met again at one instant as airborne balls at
+// zero approach, and "one" ran into the bound of events there (some 950 impacts). A hop within LINK_EXCURSION is taken
+// onto the cloth.
+TEST(SustainedContact, AJammedRowStruckIntoTheRailEndsWithNoBallOnABoundOfEvents)
+{
+  const bsp::ShotConfiguration c = jammedRowConfiguration();
+  const double r = c.ball_radius, above = c.table.cushion_height - r;
+  const double y = 0.5 * c.table.width - std::sqrt(r * r - above * above);  // "two" touches the +y nose
+  std::vector<bsp::TableBall> others{{"one", {}}, {"two", {}}};
+  others[0].state.position = {-0.5, y - 2.0 * r, r};
+  others[1].state.position = {-0.5, y, r};
+  const bsp::CuePlacement cue = strokeAt({-0.5, y - 4.0 * r}, r, {M_PI / 2.0, 5.0 * M_PI / 180.0, 0.0, 0.3}, 4.0);
+  const auto outcome = bsp::predictShot(cue, c, others);
+  ASSERT_TRUE(outcome.ok()) << outcome.error().describe();
+  const bsp::TableTrajectory& run = outcome.value().table;
+  ASSERT_EQ(run.balls.size(), 3u);
+  for (const bsp::BallTrajectory& b : run.balls)
+  {
+    EXPECT_NE(b.outcome, bsp::MotionOutcome::TimeLimit);
+    EXPECT_LT(b.events.size(), 200u);
+  }
+  EXPECT_LT(run.ball_impacts.size(), 100u);
+  expectEnergyNeverRises(run, 1e-3, {c.ball_mass, r});
+  for (double t = 0.0; t <= run.duration(); t += 1e-4)
+    for (int i = 0; i < 3; ++i)
+      for (int j = i + 1; j < 3; ++j)
+        EXPECT_GT(gap(run, i, j, t, r), -1e-9) << i << " " << j << " t " << t;
 }
