@@ -23,6 +23,8 @@ const char* toString(ErrorKind code)
       return "numerical_failure";
     case ErrorKind::Unavailable:
       return "unavailable";
+    case ErrorKind::Stale:
+      return "stale";
   }
   return "unknown";
 }

@@ -24,6 +24,8 @@ int32_t valueOf(ErrorKind kind)
       return ErrorCode::NUMERICAL_FAILURE;
     case ErrorKind::Unavailable:
       return ErrorCode::TRANSFORM_FAILED;
+    case ErrorKind::Stale:
+      return ErrorCode::STALE_INPUT;
   }
   return ErrorCode::INVALID_ARGUMENT;
 }

@@ -76,6 +76,8 @@ Status checkNodeSettings(const NodeSettings& s)
     return invalidArgument("tf_timeout", "must be in [0, 10] s");
   if (!(s.sample_spacing >= 1e-3 && s.sample_spacing <= 1.0))
     return invalidArgument("sample_spacing", "must be in [0.001, 1] s");
+  if (!(s.table_state_timeout >= 0.0 && s.table_state_timeout <= 3600.0))
+    return invalidArgument("table_state_timeout", "must be in [0, 3600] s (0: a table state is never stale)");
   if (s.threads < 1 || s.threads > 64)
     return invalidArgument("threads", "must be in [1, 64]");
   if (!(s.recording.track_duration > 0.0 && s.recording.track_duration <= 60.0))
@@ -92,6 +94,7 @@ Expected<NodeSettings> readSettings(const ros::NodeHandle& pnh)
   pnh.param("target_frame", s.target_frame, s.target_frame);
   pnh.param("tf_timeout", s.tf_timeout, s.tf_timeout);
   pnh.param("sample_spacing", s.sample_spacing, s.sample_spacing);
+  pnh.param("table_state_timeout", s.table_state_timeout, s.table_state_timeout);
   pnh.param("threads", s.threads, s.threads);
   pnh.param("calibration/track_duration", s.recording.track_duration, s.recording.track_duration);
   int max_shots = static_cast<int>(s.recording.max_shots);

@@ -17,7 +17,9 @@ struct NodeSettings
   std::string target_frame = "table";  ///< the table frame the answers are in
   double tf_timeout = 0.2;             ///< s, wait for a transform
   double sample_spacing = 0.01;        ///< s, between trajectory samples in messages and markers
-  int threads = 2;                     ///< service threads
+  /// s: a request without balls uses the latest ~table_state only if it arrived within this (0: however old).
+  double table_state_timeout = 0.0;
+  int threads = 2;  ///< service threads
   ShotConfiguration shot;
   PlanningSettings planning;
   RecorderLimits recording;  ///< ~calibration/track_duration, ~calibration/max_shots

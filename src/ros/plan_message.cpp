@@ -43,7 +43,7 @@ CuePlan toMessage(const PlannedShot& shot, const std::string& frame)
   return plan;
 }
 
-PlanShotResult toResult(const ShotPlan& plan, const std::string& frame, double spacing)
+PlanShotResult toResult(const ShotPlan& plan, const std::string& frame, double spacing, const ros::Time& stamp)
 {
   PlanShotResult result;
   // Nothing that pots is not a plan: the action ends aborted with the closest attempt still in the result.
@@ -60,6 +60,10 @@ PlanShotResult toResult(const ShotPlan& plan, const std::string& frame, double s
     result.alternatives.push_back(toMessage(shot, frame));
   if (!plan.outcome.table.balls.empty())
     result.prediction = toMessage(plan.outcome, frame, spacing);
+  result.plan.cue_pose.header.stamp = stamp;
+  for (CuePlan& shot : result.alternatives)
+    shot.cue_pose.header.stamp = stamp;
+  result.prediction.header.stamp = stamp;
   return result;
 }
 

@@ -14,8 +14,9 @@ namespace billiard_shot_planner
 /// the stroke. Pure conversion.
 CuePlan toMessage(const PlannedShot& shot, const std::string& frame);
 
-/// The plan's result (the prediction of the best shot sampled every `spacing` seconds). Pure conversion.
-PlanShotResult toResult(const ShotPlan& plan, const std::string& frame, double spacing);
+/// The plan's result (the prediction of the best shot sampled every `spacing` seconds), its poses and prediction
+/// stamped `stamp` (when it was planned). Pure conversion.
+PlanShotResult toResult(const ShotPlan& plan, const std::string& frame, double spacing, const ros::Time& stamp);
 
 /// Where the target ended in the best shot's noisy rollouts: a cloud of small faint spheres (namespace
 /// "plan_spread"), the spread of the outcomes under the robot's noise.

@@ -64,10 +64,12 @@ Expected<PlanRequest> ShotPlannerServer::planRequest(const PlanShotGoal& goal, P
   PlanRequest request;
   if (Status status = readGoal(goal, settings, request); !status)
     return status.error();
-  const TableState table = access_.table(goal.table);
-  if (table.balls.empty())
+  const auto table = access_.table(goal.table);
+  if (!table)
+    return table.error();
+  if (table.value().balls.empty())
     return invalidArgument("table", "no balls: give them in the goal or publish them on ~table_state");
-  auto balls = access_.place_table(table);
+  auto balls = access_.place_table(table.value());
   if (!balls)
     return balls.error();
   request.balls = balls.value();
@@ -95,7 +97,7 @@ PlanShotResult ShotPlannerServer::plan(const PlanShotGoal& goal, const PlanHooks
   if (!plan)
     return failure(plan.error());
   publishMarkers(plan.value(), configuration);
-  return toResult(plan.value(), frame_, sample_spacing_);
+  return toResult(plan.value(), frame_, sample_spacing_, ros::Time::now());
 }
 
 void ShotPlannerServer::publishMarkers(const ShotPlan& plan, const ShotConfiguration& configuration)

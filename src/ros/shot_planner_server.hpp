@@ -31,7 +31,7 @@ public:
                                               PlanningSettings&)>
         configure;
     /// The goal's table, or the latest received when the goal's is empty.
-    std::function<TableState(const TableState&)> table;
+    std::function<Expected<TableState>(const TableState&)> table;
     /// The balls in the table frame.
     std::function<Expected<std::vector<TableBall>>(const TableState&)> place_table;
     /// A point in the table frame.

@@ -86,7 +86,8 @@ ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& pri
   if (!settings)
     throw std::runtime_error("invalid parameter ~" + settings.error().describe());
   settings_ = settings.value();
-  prediction_publisher_ = private_node.advertise<ShotPrediction>("prediction", 10);
+  // Latched: a display or a logger that connects later still gets the last prediction.
+  prediction_publisher_ = private_node.advertise<ShotPrediction>("prediction", 10, true);
   marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("trajectory_markers", 1, true);
   // The tuning server starts from the loaded parameters, not from the .cfg defaults.
   tuning_server_ = std::make_unique<dynamic_reconfigure::Server<ShotPredictorConfig>>(
@@ -210,15 +211,21 @@ void ShotPredictorNode::storeTable(const TableState::ConstPtr& table)
   {
     std::lock_guard<std::mutex> lock(table_mutex_);
     latest_table_ = *table;
+    latest_table_received_ = ros::Time::now();
   }
   calibration_->observe(*table);
 }
 
-TableState ShotPredictorNode::tableFor(const TableState& given) const
+Expected<TableState> ShotPredictorNode::tableFor(const TableState& given) const
 {
   if (!given.balls.empty())
     return given;
   std::lock_guard<std::mutex> lock(table_mutex_);
+  const double age = (ros::Time::now() - latest_table_received_).toSec();
+  if (!latest_table_.balls.empty() && settings_.table_state_timeout > 0.0 && age > settings_.table_state_timeout)
+    return Error{ErrorKind::Stale, "table",
+                 "the latest ~table_state arrived " + std::to_string(age) + " s ago, more than ~table_state_timeout (" +
+                     std::to_string(settings_.table_state_timeout) + " s): publish a fresh one or give the balls"};
   return latest_table_;
 }
 
@@ -286,7 +293,10 @@ bool ShotPredictorNode::predict(PredictShot::Request& request, PredictShot::Resp
     ROS_WARN("predict_shot: %s", response.message.c_str());
     return true;  // a domain error is an answer, not a failed call
   };
-  const TableState table = tableFor(request.table);
+  const auto fresh = tableFor(request.table);
+  if (!fresh)
+    return fail(fresh.error());
+  const TableState& table = fresh.value();
   if (Status status = firstError({checkTable(table), checkRequest(request, hasCueBall(table))}); !status)
     return fail(status.error());
   auto configuration = configurationWith(request.override_names, request.override_values);
@@ -311,7 +321,9 @@ bool ShotPredictorNode::predict(PredictShot::Request& request, PredictShot::Resp
   response.message = "ok";
   response.error_code = errorCode(ErrorCode::SUCCESS);
   response.prediction = toMessage(outcome.value(), settings_.target_frame, settings_.sample_spacing);
-  response.prediction.header.stamp = ros::Time::now();
+  // The prediction is of the strike: at the cue pose's time, or now for a pose stamped 0 ("the latest").
+  response.prediction.header.stamp =
+      request.cue_pose.header.stamp.isZero() ? ros::Time::now() : request.cue_pose.header.stamp;
   response.ball_velocity = response.prediction.ball_velocity;
   response.ball_angular_velocity = response.prediction.ball_angular_velocity;
   response.states = response.prediction.states;

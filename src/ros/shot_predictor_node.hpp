@@ -38,7 +38,9 @@ private:
   /// to give when it holds the cue ball.
   Expected<CuePlacement> placeCue(const PredictShot::Request& request, bool cue_ball_in_table) const;
   /// `given` (a request's or a goal's table), or the latest one received on ~table_state when it is empty.
-  TableState tableFor(const TableState& given) const;
+  /// The request's table, or the latest ~table_state when it has no balls (Stale when older than
+  /// ~table_state_timeout).
+  Expected<TableState> tableFor(const TableState& given) const;
   /// The cue's tip and direction in the table frame, at `speed` (its ball left at the origin).
   Expected<CuePlacement> placeCuePose(const geometry_msgs::PoseStamped& cue_pose, double speed) const;
   /// The table's balls in the table frame (at rest on the cloth), waiting for tf at most `tf_timeout` seconds.
@@ -69,6 +71,7 @@ private:
   ros::Subscriber table_subscriber_;
   mutable std::mutex table_mutex_;  ///< guards latest_table_ against the subscriber's callback
   TableState latest_table_;
+  ros::Time latest_table_received_;  ///< when latest_table_ arrived
   std::unique_ptr<ShotPlannerServer> planner_;
   std::unique_ptr<ShotCalibrationServer> calibration_;
 };

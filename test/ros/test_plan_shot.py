@@ -69,6 +69,9 @@ class PlanShotTest(unittest.TestCase):
         self.assertEqual(state, GoalStatus.SUCCEEDED, result.message)
         self.assertTrue(result.success and result.found, result.explanation)
         self.assertEqual(result.error_code.val, ErrorCode.SUCCESS)
+        # Stamped when planned: the plan's cue pose and its prediction alike.
+        self.assertFalse(result.plan.cue_pose.header.stamp.is_zero())
+        self.assertEqual(result.prediction.header.stamp, result.plan.cue_pose.header.stamp)
         self.assertEqual(result.plan.target, "one")
         self.assertEqual(result.plan.pocket, TOP_RIGHT)
         self.assertTrue(result.plan.confidence_low <= result.plan.success_probability <= result.plan.confidence_high)

@@ -2,6 +2,7 @@
 // input is answered with success = false and a reason, markers are latched arrays that replace each other, and
 // concurrent callers are all served.
 #include <billiard_shot_planner/PredictShot.h>
+#include <billiard_shot_planner/ShotPrediction.h>
 #include <billiard_shot_planner/TableState.h>
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <gtest/gtest.h>
@@ -524,4 +525,60 @@ TEST_F(PredictShotNode, TheLatestTableStateIsUsedWhenTheRequestHasNone)
       break;
   }
   EXPECT_EQ(call(without).prediction.balls.size(), 1u);
+}
+
+// With ~table_state_timeout (0.5 s for the node "stale_predictor" of predict_shot.test), the latest table state is
+// used while it is fresh and refused with STALE_INPUT once it is older; a request that gives its balls is unaffected.
+TEST_F(PredictShotNode, AStaleTableStateIsRefusedWithItsCode)
+{
+  const std::string stale_service = "/stale_predictor/predict_shot";
+  ASSERT_TRUE(ros::service::waitForService(stale_service, ros::Duration(30)));
+  ros::NodeHandle node;
+  ros::Publisher publisher = node.advertise<bsp::TableState>("/stale_predictor/table_state", 1, true);
+  const auto with_table = followWithObjectBall();
+  auto without = with_table;
+  without.table = bsp::TableState{};
+  const auto callStale = [&](const bsp::PredictShot::Request& request)
+  {
+    bsp::PredictShot srv;
+    srv.request = request;
+    EXPECT_TRUE(ros::service::call(stale_service, srv));
+    return srv.response;
+  };
+  bool fresh = false;
+  for (int attempt = 0; attempt < 50 && !fresh; ++attempt)
+  {
+    publisher.publish(with_table.table);
+    ros::Duration(0.05).sleep();
+    const auto response = callStale(without);
+    fresh = response.success && response.prediction.balls.size() == 2;
+  }
+  EXPECT_TRUE(fresh);
+  ros::Duration(1.0).sleep();
+  const auto stale = callStale(without);
+  EXPECT_FALSE(stale.success);
+  EXPECT_EQ(stale.error_code.val, bsp::ErrorCode::STALE_INPUT) << stale.message;
+  EXPECT_NE(stale.message.find("table"), std::string::npos) << stale.message;
+  EXPECT_TRUE(callStale(with_table).success);
+}
+
+// The prediction is stamped with the strike's time, the cue pose's stamp (a pose in the table frame needs no tf at
+// that time), and ~prediction is latched: a subscriber that connects after the call still gets it.
+TEST_F(PredictShotNode, ThePredictionIsStampedWithTheStrikeAndLatched)
+{
+  auto request = toRequest(shot_fixtures::follow());
+  request.cue_pose.header.stamp = ros::Time(1234.5);
+  const auto response = call(request);
+  ASSERT_TRUE(response.success) << response.message;
+  EXPECT_EQ(response.prediction.header.stamp, ros::Time(1234.5));
+  ros::NodeHandle node;
+  std::atomic<bool> received{false};
+  ros::Subscriber subscriber = node.subscribe<bsp::ShotPrediction>(
+      "/shot_predictor/prediction", 1, [&](const bsp::ShotPrediction::ConstPtr&) { received = true; });
+  for (int attempt = 0; attempt < 100 && !received; ++attempt)
+  {
+    ros::Duration(0.05).sleep();
+    ros::spinOnce();
+  }
+  EXPECT_TRUE(received);
 }

@@ -17,6 +17,7 @@ enum class ErrorKind
   TimeLimitExceeded,     ///< the call did not finish within its wall-clock budget
   NumericalFailure,      ///< the integrator or a root finder failed
   Unavailable,           ///< an input the call needs is not available (yet): a retry may succeed
+  Stale,                 ///< an input is older than the caller allows: a fresh one is needed
 };
 
 const char* toString(ErrorKind code);
