@@ -95,6 +95,25 @@ bool routeIsClear(const Eigen::Vector2d& object, const Eigen::Vector2d& hole, co
          (route.bank_cushion < 0 || pathIsClear(route.first_leg_end, hole, target, context));
 }
 
+/// The difficulty's factor for a route: a ball in the way, a bank.
+double penalty(bool blocked, const Route& route)
+{
+  return (blocked ? BLOCKED_PENALTY : 1.0) * (route.bank_cushion >= 0 ? BANK_PENALTY : 1.0);
+}
+
+/// Raises the stroke's cue to the lowest elevation that clears (clearElevation); false, counted, when none does.
+bool raiseToClear(Stroke& stroke, const PlanContext& context, CandidateSearch& search)
+{
+  const auto theta = clearElevation(stroke, context, context.request.limits.min_theta);
+  if (!theta)
+  {
+    ++search.cue_blocked;
+    return false;
+  }
+  stroke.theta = *theta;
+  return true;
+}
+
 /// The target touches the cue ball: the strike moves both at once, and the target leaves along the line of centres
 /// turned by the throw, so the cue aims along that line, turned towards the route by a few times the angle to find.
 void addFrozenCandidate(const TableBall& target, int pocket, const Route& route, const PlanContext& context,
@@ -115,16 +134,11 @@ void addFrozenCandidate(const TableBall& target, int pocket, const Route& route,
   Stroke stroke;
   stroke.phi = std::atan2(centres.y(), centres.x()) + 3.0 * turn;
   stroke.speed = frozenSpeed(route.length, context);
-  const auto theta = clearElevation(stroke, context, context.request.limits.min_theta);
-  if (!theta)
-  {
-    ++search.cue_blocked;
+  if (!raiseToClear(stroke, context, search))
     return;
-  }
-  stroke.theta = *theta;
-  const double penalty = (route_blocked ? BLOCKED_PENALTY : 1.0) * (route.bank_cushion >= 0 ? BANK_PENALTY : 1.0);
-  search.candidates.push_back({target.id, pocket, stroke, std::abs(turn), penalty * route.length, route.bank_cushion,
-                               CueBallPath::Straight, context.cue_ball, line, false, route_blocked});
+  search.candidates.push_back({target.id, pocket, stroke, std::abs(turn), penalty(route_blocked, route) * route.length,
+                               route.bank_cushion, CueBallPath::Straight, context.cue_ball, line, false,
+                               route_blocked});
 }
 
 void addCandidate(const TableBall& target, int pocket, const Route& route, const PlanContext& context,
@@ -156,15 +170,9 @@ void addCandidate(const TableBall& target, int pocket, const Route& route, const
   Stroke stroke;
   stroke.phi = std::atan2(aim.y(), aim.x());
   stroke.speed = initialSpeed(aim.norm(), route.length, cut, context);
-  const auto theta = clearElevation(stroke, context, context.request.limits.min_theta);
-  if (!theta)
-  {
-    ++search.cue_blocked;
+  if (!raiseToClear(stroke, context, search))
     return;
-  }
-  stroke.theta = *theta;
-  const double penalty = (blocked ? BLOCKED_PENALTY : 1.0) * (route.bank_cushion >= 0 ? BANK_PENALTY : 1.0);
-  const double difficulty = penalty * (aim.norm() + route.length) / std::max(std::cos(cut), 0.05);
+  const double difficulty = penalty(blocked, route) * (aim.norm() + route.length) / std::max(std::cos(cut), 0.05);
   search.candidates.push_back({target.id, pocket, stroke, cut, difficulty, route.bank_cushion, CueBallPath::Straight,
                                ghost, line, cue_path_blocked, route_blocked});
 }
