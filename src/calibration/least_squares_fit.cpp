@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include "parameter_sensitivity.hpp"
@@ -234,9 +235,9 @@ bool fitFrom(const Model& model, const std::vector<FitParameter>& parameters, st
 /// The starting points in order of their cost, those where the model fails left out; the first point, the
 /// parameters' own start, has `start_cost` (Σr², already evaluated).
 std::vector<std::vector<double>> rankedStarts(const Model& model, const std::vector<FitParameter>& parameters,
-                                              double start_cost)
+                                              double start_cost, int count)
 {
-  std::vector<std::vector<double>> candidates = detail::startingPoints(parameters, model.options.starts);
+  std::vector<std::vector<double>> candidates = detail::startingPoints(parameters, count);
   std::vector<std::pair<double, std::vector<double>>> ranked = {{start_cost, candidates.front()}};
   Eigen::VectorXd r;
   for (std::size_t k = 1; k < candidates.size() && model.secondsLeft() > 0.0; ++k)
@@ -250,10 +251,27 @@ std::vector<std::vector<double>> rankedStarts(const Model& model, const std::vec
   return points;
 }
 
+int degreesOfFreedom(const LocalFit& fit)
+{
+  return std::max(static_cast<int>(fit.residuals.size() - fit.free.size()), 1);
+}
+
+/// Whether Σr² lies within three standard deviations of a χ² of its degrees of freedom: the data's noise explains
+/// what is left.
+bool explainsData(const LocalFit& fit)
+{
+  const double dof = degreesOfFreedom(fit);
+  return fit.residuals.squaredNorm() <= dof + 3.0 * std::sqrt(2.0 * dof);
+}
+
 FitResult report(const std::vector<FitParameter>& parameters, const LocalFit& fit)
 {
   const int n = static_cast<int>(parameters.size());
   const detail::Covariance covariance = detail::covarianceOf(fit.jacobian, fit.free);
+  const int dof = degreesOfFreedom(fit);
+  const double chi2_per_dof = fit.residuals.squaredNorm() / dof;
+  // Residuals larger than their stated noise make the curvature's precision too optimistic by √(χ²/dof).
+  const double birge = std::sqrt(std::max(chi2_per_dof, 1.0));
   FitResult result;
   result.correlation = Eigen::MatrixXd::Constant(n, n, std::numeric_limits<double>::quiet_NaN());
   for (int i = 0; i < n; ++i)
@@ -262,7 +280,7 @@ FitResult report(const std::vector<FitParameter>& parameters, const LocalFit& fi
     fitted.name = parameters[i].name;
     fitted.value = fit.values[i];
     fitted.identifiable = std::find(fit.free.begin(), fit.free.end(), i) != fit.free.end();
-    fitted.sigma = covariance.sigma(i);
+    fitted.sigma = birge * covariance.sigma(i);
     fitted.at_bound = fit.values[i] <= parameters[i].lower || fit.values[i] >= parameters[i].upper;
     result.parameters.push_back(fitted);
     for (int j = 0; j < n; ++j)
@@ -273,11 +291,40 @@ FitResult report(const std::vector<FitParameter>& parameters, const LocalFit& fi
   result.converged = fit.free.empty() || fit.summary.termination_type == ceres::CONVERGENCE;
   result.message = fit.free.empty() ? "nothing the data determine" : fit.summary.BriefReport();
   result.iterations = static_cast<int>(fit.summary.iterations.size());
+  result.degrees_of_freedom = dof;
+  result.chi2_per_dof = chi2_per_dof;
+  result.explains_data = explainsData(fit);
+  if (!result.explains_data)
+    result.message += " The best fit does not explain the data: chi2/dof = " + std::to_string(chi2_per_dof) +
+                      " where their noise gives 1 +- " + std::to_string(std::sqrt(2.0 / dof)) +
+                      " (a model that does not fit them, or their noise understated); sigmas scaled by " +
+                      std::to_string(birge) + ".";
   return result;
 }
 
 /// Local fits from this many of the best starting points.
 constexpr std::size_t LOCAL_FITS = 3;
+
+/// Local fits from the best LOCAL_FITS of `points` not tried yet, keeping the best end in `best`; stops once a fit
+/// explains the data or the budget is spent.
+void localFits(const Model& model, const std::vector<FitParameter>& parameters,
+               const std::vector<std::vector<double>>& points, std::vector<std::vector<double>>& tried,
+               std::optional<LocalFit>& best)
+{
+  LocalFit candidate;
+  std::size_t fits = 0;
+  for (const std::vector<double>& point : points)
+  {
+    if (fits == LOCAL_FITS || (best && (explainsData(*best) || model.secondsLeft() <= 0.0)))
+      return;
+    if (std::find(tried.begin(), tried.end(), point) != tried.end())
+      continue;
+    tried.push_back(point);
+    ++fits;
+    if (fitFrom(model, parameters, point, candidate) && (!best || candidate.cost() < best->cost()))
+      best = candidate;
+  }
+}
 
 }  // namespace
 
@@ -308,23 +355,18 @@ Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
   if (!evaluate(model, start, r))
     return Error{ErrorKind::NumericalFailure, "parameters", "the model cannot be evaluated at the start"};
 
-  LocalFit best, candidate;
-  bool found = false;
-  const std::vector<std::vector<double>> points = rankedStarts(model, parameters, r.squaredNorm());
-  // A fit whose χ² = Σr² is within three standard deviations of its expectation (the residual count) explains the
-  // data to their noise: no other start can do meaningfully better.
-  const double explained = residual_count + 3.0 * std::sqrt(2.0 * residual_count);
-  for (std::size_t k = 0; k < std::min(points.size(), LOCAL_FITS) && !(found && 2.0 * best.cost() <= explained) &&
-                          !(found && model.secondsLeft() <= 0.0);
-       ++k)
-    if (fitFrom(model, parameters, points[k], candidate) && (!found || candidate.cost() < best.cost()))
-    {
-      best = candidate;
-      found = true;
-    }
-  if (!found)
+  // A fit whose χ² is within three standard deviations of its expectation explains the data to their noise: no
+  // other start can do meaningfully better. One that does not searches on from more points, unless outliers are
+  // expected (a robust loss), where χ² says nothing of the fit.
+  std::optional<LocalFit> best;
+  std::vector<std::vector<double>> tried;
+  localFits(model, parameters, rankedStarts(model, parameters, r.squaredNorm(), options.starts), tried, best);
+  if (best && !explainsData(*best) && options.robust_loss_sigmas == 0.0 && options.starts < ESCALATED_STARTS &&
+      model.secondsLeft() > 0.0)
+    localFits(model, parameters, rankedStarts(model, parameters, r.squaredNorm(), ESCALATED_STARTS), tried, best);
+  if (!best)
     return Error{ErrorKind::NumericalFailure, "parameters", "the model cannot be evaluated along the fit"};
-  FitResult result = report(parameters, best);
+  FitResult result = report(parameters, *best);
   result.initial_cost = 0.5 * r.squaredNorm();
   if (model.secondsLeft() <= 0.0)
   {

@@ -239,7 +239,10 @@ LinkStep linkStep(const BallState& a_in, const BallState& b_in, double t, const 
   if (ra.phase == MotionPhase::Airborne || rb.phase == MotionPhase::Airborne)
     return step;
   double force = holdingForce(rel, ra, rb, ball.mass);
-  if (letsGo(ra, force, ball, p) | letsGo(rb, force, ball, p))
+  // Both balls are asked: each may start rolling under the same force.
+  const bool a_goes = letsGo(ra, force, ball, p);
+  const bool b_goes = letsGo(rb, force, ball, p);
+  if (a_goes || b_goes)
     force = holdingForce(rel, ra, rb, ball.mass);
   const double scale = ball.mass * (ra.free.norm() + rb.free.norm() + rel.tangential_speed2 / rel.d.norm());
   if (!(force > -FORCE_ROUND_OFF * scale) || (force <= 0.0 && scale == 0.0))

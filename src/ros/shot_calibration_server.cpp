@@ -100,6 +100,9 @@ void fillAnswer(const TrackFit& fitted, std::size_t shots, FitCalibration::Respo
   response.residuals = fitted.shot_rms;
   response.chi2 = 2.0 * fit.final_cost;
   response.observations = static_cast<uint32_t>(fit.residuals.size());
+  response.degrees_of_freedom = static_cast<uint32_t>(fit.degrees_of_freedom);
+  response.chi2_per_dof = fit.chi2_per_dof;
+  response.explains_data = fit.explains_data;
   response.converged = fit.converged;
   response.shots = static_cast<uint32_t>(shots);
   response.overlay_yaml = calibrationOverlayYaml(fit, "fitted by shot_predictor ~fit_calibration");

@@ -232,3 +232,45 @@ TEST(TrackFit, BadTracksAreRefusedNamingTheObservation)
   EXPECT_EQ(field({good}, 0.0), "position_sigma");
   EXPECT_EQ(field({}), "shots");
 }
+
+// Eight cue-ball shots drawn with μ_s 0.19, μ_r 0.013 and cushion e 0.74 (1–3 m/s, b within ±0.3, 2 mm of noise),
+// fitted from the configuration's defaults with the default single start: the truth comes back, and the answer
+// reports its degrees of freedom and χ² per degree near 1 — χ² of n − p degrees of freedom has mean 1 per degree
+// and σ √(2/(n − p)), 0.04 here.
+TEST(TrackFit, AFitReportsItsChiSquarePerDegreeOfFreedom)
+{
+  std::mt19937 rng(36);
+  std::uniform_real_distribution<double> x(-0.9, 0.9), y(-0.4, 0.4), phi(-180.0, 180.0), speed(1.0, 3.0), b(-0.3, 0.3);
+  bsp::ShotConfiguration truth;
+  truth.motion.sliding_friction = 0.19;
+  truth.motion.rolling_friction = 0.013;
+  truth.table.cushion.restitution = 0.74;
+  std::vector<bsp::ObservedShot> shots;
+  while (shots.size() < 8)
+  {
+    const auto cue =
+        bsp::placeStroke({phi(rng) * M_PI / 180.0, 5.0 * M_PI / 180.0, speed(rng), 0.0, b(rng)}, {x(rng), y(rng)}, R);
+    if (cue.ok())
+      shots.push_back(observed(cue.value(), truth, rng));
+  }
+  const bsp::ShotConfiguration defaults;
+  const std::vector<bsp::FitParameter> parameters = {
+      {"motion.sliding_friction", defaults.motion.sliding_friction, 0.01, 1.0},
+      {"motion.rolling_friction", defaults.motion.rolling_friction, 0.001, 0.2},
+      {"table.cushion.restitution", defaults.table.cushion.restitution, 0.0, 1.0}};
+  const auto fitted = bsp::fitTracks(defaults, parameters, shots, CAMERA_SIGMA, slowMachineBudget());
+  ASSERT_TRUE(fitted.ok()) << fitted.error().describe();
+  const bsp::FitResult& fit = fitted->fit;
+  const double expected[] = {0.19, 0.013, 0.74};
+  for (int i = 0; i < 3; ++i)
+  {
+    const bsp::FittedParameter& p = fit.parameters[i];
+    std::printf("%s: %.5f ± %.5f (truth %g)\n", p.name.c_str(), p.value, p.sigma, expected[i]);
+    EXPECT_NEAR(p.value, expected[i], 4.0 * p.sigma) << p.name;
+  }
+  std::printf("chi2 %.1f for %d degrees of freedom: %.3f per degree\n", 2.0 * fit.final_cost, fit.degrees_of_freedom,
+              fit.chi2_per_dof);
+  EXPECT_EQ(fit.degrees_of_freedom, static_cast<int>(fit.residuals.size()) - 3);
+  EXPECT_NEAR(fit.chi2_per_dof, 1.0, 0.15);
+  EXPECT_TRUE(fit.explains_data);
+}

@@ -362,8 +362,9 @@ TEST_F(PredictShotNode, PredictionIsPublished)
     ros::WallDuration(0.01).sleep();
   const auto response = call(toRequest(shot_fixtures::masse()));
   ASSERT_TRUE(response.success);
+  // ~prediction is latched: the previous call's prediction may come first.
   const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(10.0);
-  while (received == 0 && ros::WallTime::now() < deadline)
+  while (velocity.load() != response.ball_velocity.x && ros::WallTime::now() < deadline)
   {
     ros::spinOnce();
     ros::WallDuration(0.01).sleep();

@@ -30,7 +30,9 @@ struct FitOptions
   /// Points the search may start from: the parameters' own start and starts − 1 more spread over the bounds (a
   /// Halton sequence, on a log scale where a positive range spans more than a factor of ten; a parameter with an
   /// infinite bound keeps its start). The local fit runs from the best few by cost, and the best end is the answer:
-  /// the residuals of an impact are not convex in its constants.
+  /// the residuals of an impact are not convex in its constants. When the best end does not explain the data (its
+  /// χ² far above its degrees of freedom, FitResult::explains_data), the search goes on from at least
+  /// ESCALATED_STARTS points within the budget.
   int starts = 1;
   int max_iterations = 50;  ///< of each local fit
   /// Threads that evaluate the residual blocks side by side (fitLeastSquares with blocks), at most 64.
@@ -43,12 +45,16 @@ struct FitOptions
   double relative_step = 1e-4;
 };
 
+/// The starting points a fit that does not explain its data searches from at least (FitOptions::starts).
+constexpr int ESCALATED_STARTS = 32;
+
 struct FittedParameter
 {
   std::string name;
   double value = 0.0;
-  /// Standard deviation from the curvature of the fit, (JᵀJ)⁻¹ with the residuals in standard deviations; infinite
-  /// for a parameter that is not identifiable.
+  /// Standard deviation from the curvature of the fit, (JᵀJ)⁻¹ with the residuals in standard deviations, times
+  /// √(χ²/dof) where the residuals are larger than their stated noise (χ²/dof > 1: the precision the curvature
+  /// claims is scaled to what the residuals show, Birge's ratio); infinite for a parameter that is not identifiable.
   double sigma = std::numeric_limits<double>::infinity();
   bool identifiable = false;
   bool at_bound = false;  ///< the best point lies on one of its bounds
@@ -59,9 +65,15 @@ struct FitResult
   std::vector<FittedParameter> parameters;  ///< in the order asked
   /// Correlations of the identifiable parameters (rows and columns in the order asked, NaN for the others).
   Eigen::MatrixXd correlation;
-  Eigen::VectorXd residuals;  ///< at the best point, in standard deviations
-  double initial_cost = 0.0;  ///< ½ Σ r² at the start
-  double final_cost = 0.0;    ///< ½ Σ r² at the best point
+  Eigen::VectorXd residuals;   ///< at the best point, in standard deviations
+  double initial_cost = 0.0;   ///< ½ Σ r² at the start
+  double final_cost = 0.0;     ///< ½ Σ r² at the best point
+  int degrees_of_freedom = 0;  ///< residuals less the parameters fitted
+  double chi2_per_dof = 0.0;   ///< Σ r² / degrees_of_freedom: about 1 when the model explains the data to their noise
+  /// Σ r² lies within three standard deviations of a χ² of degrees_of_freedom (dof + 3√(2 dof)): the fit explains
+  /// the data as well as their noise allows. False: the best point found still leaves residuals the noise does not
+  /// (a model or a start that does not fit; the message says so).
+  bool explains_data = false;
   bool converged = false;
   std::string message;  ///< the optimiser's report in one line
   int iterations = 0;
