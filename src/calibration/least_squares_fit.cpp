@@ -270,8 +270,9 @@ FitResult report(const std::vector<FitParameter>& parameters, const LocalFit& fi
   const detail::Covariance covariance = detail::covarianceOf(fit.jacobian, fit.free);
   const int dof = degreesOfFreedom(fit);
   const double chi2_per_dof = fit.residuals.squaredNorm() / dof;
-  // Residuals larger than their stated noise make the curvature's precision too optimistic by √(χ²/dof).
-  const double birge = std::sqrt(std::max(chi2_per_dof, 1.0));
+  // Residuals that the stated noise cannot explain make the curvature's precision too optimistic by √(χ²/dof);
+  // within the noise's own scatter of χ² the stated noise stands (scaling there would overstate σ).
+  const double birge = explainsData(fit) ? 1.0 : std::sqrt(chi2_per_dof);
   FitResult result;
   result.correlation = Eigen::MatrixXd::Constant(n, n, std::numeric_limits<double>::quiet_NaN());
   for (int i = 0; i < n; ++i)

@@ -53,7 +53,7 @@ struct FittedParameter
   std::string name;
   double value = 0.0;
   /// Standard deviation from the curvature of the fit, (JᵀJ)⁻¹ with the residuals in standard deviations, times
-  /// √(χ²/dof) where the residuals are larger than their stated noise (χ²/dof > 1: the precision the curvature
+  /// √(χ²/dof) where the fit does not explain the data (FitResult::explains_data false: the precision the curvature
   /// claims is scaled to what the residuals show, Birge's ratio); infinite for a parameter that is not identifiable.
   double sigma = std::numeric_limits<double>::infinity();
   bool identifiable = false;
