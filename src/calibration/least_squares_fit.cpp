@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <string>
 
 #include "parameter_sensitivity.hpp"
 #include "starting_points.hpp"
@@ -251,6 +252,35 @@ std::vector<std::vector<double>> rankedStarts(const Model& model, const std::vec
   return points;
 }
 
+/// One-sided differences whose gap exceeds this fraction of the smaller: the residuals jump between them.
+constexpr double JUMP_RATIO = 0.5;
+
+/// Replaces each free column of the central-difference Jacobian by the smaller one-sided difference where the two
+/// disagree: the residuals jump within the step there (a track crosses an event — a jaw caught or missed, a cushion
+/// just reached), the central difference spans the jump and claims a precision the data do not hold. Returns the
+/// names of the parameters so treated.
+std::vector<std::string> smoothSideCurvature(const Model& model, const std::vector<FitParameter>& parameters,
+                                             LocalFit& fit)
+{
+  std::vector<std::string> jumped;
+  Eigen::VectorXd ahead, behind;
+  for (int i : fit.free)
+  {
+    const double step = model.options.relative_step * (fit.values[i] != 0.0 ? std::abs(fit.values[i]) : 1.0);
+    std::vector<double> plus = fit.values, minus = fit.values;
+    plus[i] += step;
+    minus[i] -= step;
+    if (!evaluate(model, plus, ahead) || !evaluate(model, minus, behind))
+      continue;
+    const Eigen::VectorXd forward = (ahead - fit.residuals) / step, backward = (fit.residuals - behind) / step;
+    if ((forward - backward).norm() <= JUMP_RATIO * std::min(forward.norm(), backward.norm()))
+      continue;
+    fit.jacobian.col(i) = forward.norm() < backward.norm() ? forward : backward;
+    jumped.push_back(parameters[i].name);
+  }
+  return jumped;
+}
+
 int degreesOfFreedom(const LocalFit& fit)
 {
   return std::max(static_cast<int>(fit.residuals.size() - fit.free.size()), 1);
@@ -367,8 +397,12 @@ Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
     localFits(model, parameters, rankedStarts(model, parameters, r.squaredNorm(), ESCALATED_STARTS), tried, best);
   if (!best)
     return Error{ErrorKind::NumericalFailure, "parameters", "the model cannot be evaluated along the fit"};
+  const std::vector<std::string> jumped = smoothSideCurvature(model, parameters, *best);
   FitResult result = report(parameters, *best);
   result.initial_cost = 0.5 * r.squaredNorm();
+  for (const std::string& name : jumped)
+    result.message += " The residuals jump within the difference step of " + name +
+                      " (a track crosses an event there): its sigma is taken from the smoother side.";
   if (model.secondsLeft() <= 0.0)
   {
     result.converged = false;

@@ -86,6 +86,36 @@ TEST(LeastSquaresFit, OneSigmaHoldsTheTruthTwoThirdsOfTheTime)
   EXPECT_NEAR(static_cast<double>(within) / total, 0.683, 0.057);
 }
 
+// A residual that jumps by 30 σ just beyond the optimum, within the difference step (as a track does when a
+// constant decides whether a ball catches a jaw): the central difference spans the jump and would claim a σ some
+// 10⁵ times too small. σ comes from the smooth side instead: the normal equations' σ, exactly for a linear model.
+TEST(LeastSquaresFit, ASigmaIsNotTakenAcrossAJumpInTheResiduals)
+{
+  const Quadratic data(7);
+  const Eigen::MatrixXd a = data.design();
+  const Eigen::VectorXd best = (a.transpose() * a).ldlt().solve(a.transpose() * data.y / data.sigma);
+  const Eigen::MatrixXd covariance = (a.transpose() * a).inverse();
+  const bsp::FitOptions options;
+  const double jump = best(0) + 0.3 * options.relative_step * std::abs(best(0));
+  const int n = static_cast<int>(data.x.size());
+  const bsp::ResidualFunction residuals = [&](const std::vector<double>& p, Eigen::VectorXd& r)
+  {
+    r.resize(n + 1);
+    r.head(n) = ((p[0] + p[1] * data.x.array() + p[2] * data.x.array().square()).matrix() - data.y) / data.sigma;
+    r(n) = p[0] > jump ? 30.0 : 0.0;
+    return true;
+  };
+  const auto fit = bsp::fitLeastSquares({{"c0", 1.0, -10.0, 10.0}, {"c1", 1.0, -10.0, 10.0}, {"c2", 1.0, -10.0, 10.0}},
+                                        n + 1, residuals, options);
+  ASSERT_TRUE(fit.ok()) << fit.error().describe();
+  ASSERT_LT(fit->parameters[0].value, jump);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(fit->parameters[i].sigma, std::sqrt(covariance(i, i)), 1e-3 * std::sqrt(covariance(i, i)))
+        << fit->parameters[i].name;
+  EXPECT_NE(fit->message.find("jump within the difference step of c0"), std::string::npos) << fit->message;
+  EXPECT_EQ(fit->message.find("of c1"), std::string::npos) << fit->message;
+}
+
 TEST(LeastSquaresFit, ParametersTheDataCannotSeparateAreReportedNotFitted)
 {
   // y depends on a + b only: one of them is undetermined, and stays at its start; the other one carries the sum.

@@ -142,7 +142,7 @@ TEST(ShotRecorder, AFitOfRecordedSightingsFindsTheConstantThatDrewThem)
     for (double t = 0.0; t < std::min(4.0, outcome->trajectory.duration()); t += 1.0 / 30.0)
       recorder.observe({clock + t,
                         {{bsp::CUE_BALL_ID,
-                          outcome->trajectory.at(t).position.head<2>() + Eigen::Vector2d(noise(rng), noise(rng))}}});
+                          outcome->trajectory.at(t).position.head<2>() + Eigen::Vector2d{noise(rng), noise(rng)}}}});
     clock += 20.0;
   }
   const auto fitted = bsp::fitTracks(bsp::ShotConfiguration{}, {{"motion.rolling_friction", 0.01, 0.001, 0.2}},

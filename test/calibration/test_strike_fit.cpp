@@ -101,8 +101,8 @@ TEST(StrikeFit, ItsSigmaIsTheScatterOfFitsToNoisyObservations)
     std::vector<bsp::ObservedStrike> noisy = clean;
     for (bsp::ObservedStrike& s : noisy)
     {
-      s.velocity += s.velocity_sigma * Eigen::Vector2d(gauss(rng), gauss(rng));
-      s.angular_velocity += s.angular_velocity_sigma * Eigen::Vector2d(gauss(rng), gauss(rng));
+      s.velocity += s.velocity_sigma * Eigen::Vector2d{gauss(rng), gauss(rng)};
+      s.angular_velocity += s.angular_velocity_sigma * Eigen::Vector2d{gauss(rng), gauss(rng)};
     }
     const auto fit = bsp::fitStrikes(bsp::ShotConfiguration{}, STRIKE_CONSTANTS, noisy, spreadStarts());
     ASSERT_TRUE(fit.ok()) << fit.error().describe();

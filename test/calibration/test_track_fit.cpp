@@ -44,7 +44,7 @@ bsp::ObservedShot observed(const bsp::CuePlacement& cue, const bsp::ShotConfigur
   const double end = std::min(3.0, outcome->trajectory.duration());
   for (double t = 0.0; t <= end; t += FRAME)
     shot.tracks[bsp::CUE_BALL_ID].push_back(
-        {t, outcome->trajectory.at(t).position.head<2>() + Eigen::Vector2d(noise(rng), noise(rng))});
+        {t, outcome->trajectory.at(t).position.head<2>() + Eigen::Vector2d{noise(rng), noise(rng)}});
   return shot;
 }
 
@@ -152,7 +152,7 @@ std::vector<bsp::ObservedShot> cutShots(const bsp::ShotConfiguration& c, std::mt
       const bsp::BallTrajectory& path = outcome->table.balls[b];
       for (double t = 0.0; t <= std::min(2.5, path.duration()); t += FRAME)
         shot.tracks[outcome->table.ids[b]].push_back(
-            {t, path.at(t).position.head<2>() + Eigen::Vector2d(noise(rng), noise(rng))});
+            {t, path.at(t).position.head<2>() + Eigen::Vector2d{noise(rng), noise(rng)}});
     }
     shots.push_back(shot);
   }
@@ -248,8 +248,10 @@ TEST(TrackFit, AFitReportsItsChiSquarePerDegreeOfFreedom)
   std::vector<bsp::ObservedShot> shots;
   while (shots.size() < 8)
   {
-    const auto cue =
-        bsp::placeStroke({phi(rng) * M_PI / 180.0, 5.0 * M_PI / 180.0, speed(rng), 0.0, b(rng)}, {x(rng), y(rng)}, R);
+    // Drawn one by one: the order in which a call's arguments are evaluated is the compiler's choice.
+    const bsp::Stroke drawn{phi(rng) * M_PI / 180.0, 5.0 * M_PI / 180.0, speed(rng), 0.0, b(rng)};
+    const Eigen::Vector2d ball{x(rng), y(rng)};
+    const auto cue = bsp::placeStroke(drawn, ball, R);
     if (cue.ok())
       shots.push_back(observed(cue.value(), truth, rng));
   }
