@@ -8,6 +8,7 @@
 #include "billiard_shot_planner/motion/table_strike.hpp"
 #include "billiard_shot_planner/scenarios/cue_stroke.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
+#include "table_helpers.hpp"
 
 namespace bsp = billiard_shot_planner;
 
@@ -20,14 +21,7 @@ const double R = CONFIGURATION.ball_radius;
 /// A level stroke on the ball at `ball`: φ from +x (degrees), tip offsets a, b in radii.
 bsp::CuePlacement stroke(const Eigen::Vector2d& ball, double phi_deg, double speed, double b = 0.0)
 {
-  const auto geometry = bsp::strokeGeometry({phi_deg * PI / 180.0, 0.0, 0.0, b});
-  EXPECT_TRUE(geometry.ok());
-  bsp::CuePlacement cue;
-  cue.ball = ball;
-  cue.direction = geometry.value().cue_direction;
-  cue.tip = Eigen::Vector3d(ball.x(), ball.y(), R) + R * geometry.value().hit_normal;
-  cue.speed = speed;
-  return cue;
+  return table_helpers::strokeAt(ball, R, {phi_deg * PI / 180.0, 0.0, 0.0, b}, speed);
 }
 
 bsp::TableBall ballAt(const std::string& id, const Eigen::Vector2d& position)

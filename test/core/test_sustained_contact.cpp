@@ -15,14 +15,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "billiard_shot_planner/motion/table_simulation.hpp"
 #include "billiard_shot_planner/scenarios/cue_stroke.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
+#include "table_helpers.hpp"
 
 namespace bsp = billiard_shot_planner;
+using table_helpers::strokeAt;
 using Type = bsp::MotionEventType;
 
 namespace
@@ -30,14 +34,10 @@ namespace
 const bsp::BallProperties BALL;
 const double R = BALL.radius;
 
-bsp::BallState at(double x, double y, Eigen::Vector3d v = Eigen::Vector3d::Zero(),
-                  Eigen::Vector3d w = Eigen::Vector3d::Zero())
+bsp::BallState at(double x, double y, const Eigen::Vector3d& v = Eigen::Vector3d::Zero(),
+                  const Eigen::Vector3d& w = Eigen::Vector3d::Zero())
 {
-  bsp::BallState s;
-  s.position = {x, y, R};
-  s.velocity = v;
-  s.angular_velocity = w;
-  return s;
+  return table_helpers::stateOnCloth(R, x, y, v, w);
 }
 
 /// Kinetic energy and the potential energy of a ball above the cloth (a hop after an impact).
@@ -81,25 +81,26 @@ void expectEnergyNeverRises(const bsp::TableTrajectory& run, double spacing, con
   }
 }
 
+/// The balls run on `table` until every one rests (expected: none pocketed or stopped by a limit); nothing where
+/// the run fails.
+std::optional<bsp::TableTrajectory> runToRest(const std::vector<bsp::TableBall>& balls, const bsp::Table& table,
+                                              const bsp::MotionParameters& p)
+{
+  auto run = bsp::simulateTable(balls, BALL, table, p);
+  EXPECT_TRUE(run.ok()) << run.error().describe();
+  if (!run.ok())
+    return std::nullopt;
+  for (const bsp::BallTrajectory& b : run.value().balls)
+    EXPECT_EQ(b.outcome, bsp::MotionOutcome::Rest);
+  return std::move(run.value());
+}
+
 const bsp::MotionEvent* firstEvent(const bsp::BallTrajectory& b, Type type)
 {
   for (const bsp::MotionEvent& e : b.events)
     if (e.type == type)
       return &e;
   return nullptr;
-}
-
-/// A stroke on the ball at `ball` (predictShot's placement: the tip on the ball's surface at the hit point).
-bsp::CuePlacement strokeAt(const Eigen::Vector2d& ball, double radius, const bsp::CueStroke& s, double speed)
-{
-  const auto geometry = bsp::strokeGeometry(s);
-  EXPECT_TRUE(geometry.ok());
-  bsp::CuePlacement cue;
-  cue.ball = ball;
-  cue.direction = geometry.value().cue_direction;
-  cue.tip = Eigen::Vector3d(ball.x(), ball.y(), radius) + radius * geometry.value().hit_normal;
-  cue.speed = speed;
-  return cue;
 }
 
 /// impact_solve's table_shot example: its cue, its cue tip and cloth contacts, R = 0.028575 m.
@@ -138,11 +139,9 @@ TEST(SustainedContact, ARollingBallPushesASlidingOneAsOnePair)
 
   const std::vector<bsp::TableBall> balls{{"rear", at(x0, 0.0, {V, 0, 0}, {0, V / R, 0})},
                                           {"front", at(x0 + 2.0 * R, 0.0, {V, 0, 0})}};
-  const auto run = bsp::simulateTable(balls, BALL, table, p);
-  ASSERT_TRUE(run.ok()) << run.error().describe();
-  const bsp::TableTrajectory& r = run.value();
-  for (const bsp::BallTrajectory& b : r.balls)
-    EXPECT_EQ(b.outcome, bsp::MotionOutcome::Rest);
+  const auto run = runToRest(balls, table, p);
+  ASSERT_TRUE(run);
+  const bsp::TableTrajectory& r = *run;
   EXPECT_LT(eventCount(r), 50u);
   EXPECT_EQ(r.ball_impacts.size(), 1u);  // the sequence's limit, at t = 0: no sequence of collisions
 
@@ -235,11 +234,9 @@ TEST(SustainedContact, ThePairPartsWhereTheFrontBallDeceleratesLess)
   const double V = 0.6, psi = 60.0 * M_PI / 180.0;
   const std::vector<bsp::TableBall> balls{{"rear", at(-0.5, 0.0, {V, 0, 0}, {V * std::tan(psi) / R, 0, 0})},
                                           {"front", at(-0.5 + 2.0 * R, 0.0, {V, 0, 0})}};
-  const auto run = bsp::simulateTable(balls, BALL, table, p);
-  ASSERT_TRUE(run.ok()) << run.error().describe();
-  const bsp::TableTrajectory& r = run.value();
-  for (const bsp::BallTrajectory& b : r.balls)
-    EXPECT_EQ(b.outcome, bsp::MotionOutcome::Rest);
+  const auto run = runToRest(balls, table, p);
+  ASSERT_TRUE(run);
+  const bsp::TableTrajectory& r = *run;
   EXPECT_LT(eventCount(r), 50u);
   // The linked steps end with the gap closed but leave a normal velocity of their round-off and step error (below
   // 1e-6 m/s): where the pair lets go it may be met as one ordinary, vanishing impact.
@@ -274,11 +271,9 @@ TEST(SustainedContact, ALinkMetAtAGrazeStartsClosed)
   const double V = 0.5, x0 = -0.8, slip = 5e-5;
   const std::vector<bsp::TableBall> balls{{"rear", at(x0, 0.0, {V, 0, 0}, {0, V / R, 0})},
                                           {"front", at(x0 + 2.0 * R + 5e-10, 0.0, {V, 0, 0}, {0, (V - slip) / R, 0})}};
-  const auto run = bsp::simulateTable(balls, BALL, table, p);
-  ASSERT_TRUE(run.ok()) << run.error().describe();
-  const bsp::TableTrajectory& r = run.value();
-  for (const bsp::BallTrajectory& b : r.balls)
-    EXPECT_EQ(b.outcome, bsp::MotionOutcome::Rest);
+  const auto run = runToRest(balls, table, p);
+  ASSERT_TRUE(run);
+  const bsp::TableTrajectory& r = *run;
   EXPECT_EQ(r.ball_impacts.size(), 1u);
   const double both_rest = std::min(r.balls[0].duration(), r.balls[1].duration());
   for (double t = 0.0; t <= both_rest; t += t < 0.02 ? 1e-5 : 1e-3)

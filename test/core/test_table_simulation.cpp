@@ -12,6 +12,7 @@
 
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "billiard_shot_planner/motion/table_simulation.hpp"
+#include "table_helpers.hpp"
 
 namespace bsp = billiard_shot_planner;
 using Type = bsp::MotionEventType;
@@ -20,14 +21,10 @@ namespace
 {
 const double R = 0.0286;
 
-bsp::BallState at(double x, double y, Eigen::Vector3d v = Eigen::Vector3d::Zero(),
-                  Eigen::Vector3d w = Eigen::Vector3d::Zero())
+bsp::BallState at(double x, double y, const Eigen::Vector3d& v = Eigen::Vector3d::Zero(),
+                  const Eigen::Vector3d& w = Eigen::Vector3d::Zero())
 {
-  bsp::BallState s;
-  s.position = {x, y, R};
-  s.velocity = v;
-  s.angular_velocity = w;
-  return s;
+  return table_helpers::stateOnCloth(R, x, y, v, w);
 }
 
 void expectSameTrajectory(const bsp::BallTrajectory& a, const bsp::BallTrajectory& b)

@@ -3,6 +3,7 @@
 // Shots shared by the ROS tests: the paper's massé shot and a follow shot, as core placements (table frame), and
 // a placement as the service's request.
 #include <billiard_shot_planner/PredictShot.h>
+#include <gtest/gtest.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -41,6 +42,17 @@ inline billiard_shot_planner::CuePlacement follow()
   cue.speed = 2.0;
   cue.ball = centre.head<2>();
   return cue;
+}
+
+/// The follow shot's cue ball frozen to a ball "one" straight ahead of it, predicted: a strike of three bodies.
+inline billiard_shot_planner::ShotOutcome frozenFollow(const billiard_shot_planner::ShotConfiguration& configuration)
+{
+  const billiard_shot_planner::CuePlacement cue = follow();
+  billiard_shot_planner::TableBall one{"one", {}};
+  one.state.position << cue.ball.x() + 2.0 * configuration.ball_radius, cue.ball.y(), configuration.ball_radius;
+  const auto outcome = billiard_shot_planner::predictShot(cue, configuration, {one});
+  EXPECT_TRUE(outcome.ok()) << outcome.error().describe();
+  return outcome.ok() ? outcome.value() : billiard_shot_planner::ShotOutcome{};
 }
 
 /// A placement as the service's request (both in `frame`, stamp 0: the latest transform).

@@ -120,13 +120,10 @@ TEST(TrajectoryMarkers, EveryBallOfTheTableIsDrawnWithItsId)
 TEST(TrajectoryMarkers, FrozenShotDrawsTheBallsOfTheStrike)
 {
   const bsp::ShotConfiguration configuration;
-  const bsp::CuePlacement cue = shot_fixtures::follow();
-  bsp::TableBall one{"one", {}};
-  one.state.position << cue.ball.x() + 2.0 * configuration.ball_radius, cue.ball.y(), configuration.ball_radius;
-  const auto frozen = bsp::predictShot(cue, configuration, {one});
-  ASSERT_TRUE(frozen.ok()) << frozen.error().describe();
+  const bsp::ShotOutcome frozen = shot_fixtures::frozenFollow(configuration);
+  ASSERT_FALSE(frozen.strike.other_balls.empty());
   int pairs = 0, velocities = 0;
-  for (const Marker& m : bsp::trajectoryMarkers(frozen.value(), configuration, "table", 0.01).markers)
+  for (const Marker& m : bsp::trajectoryMarkers(frozen, configuration, "table", 0.01).markers)
   {
     if (m.ns == "strike_contacts")
     {
@@ -139,8 +136,10 @@ TEST(TrajectoryMarkers, FrozenShotDrawsTheBallsOfTheStrike)
   }
   EXPECT_EQ(pairs, 1);
   EXPECT_EQ(velocities, 1);
-  one.state.position.x() += 0.3;
-  const auto lone = bsp::predictShot(cue, configuration, {one});
+  const bsp::CuePlacement cue = shot_fixtures::follow();
+  bsp::TableBall apart{"one", {}};
+  apart.state.position << cue.ball.x() + 0.3, cue.ball.y(), configuration.ball_radius;
+  const auto lone = bsp::predictShot(cue, configuration, {apart});
   ASSERT_TRUE(lone.ok());
   for (const Marker& m : bsp::trajectoryMarkers(lone.value(), configuration, "table", 0.01).markers)
     EXPECT_TRUE(m.ns != "strike_contacts" && m.ns != "strike_velocity") << m.ns;
