@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <limits>
 
 #include "ball_contact_time.hpp"
 #include "ball_mover.hpp"
+#include "billiard_shot_planner/core/validation.hpp"
 #include "linked_pair.hpp"
 #include "table_collisions.hpp"
 
@@ -16,6 +18,9 @@ namespace detail
 namespace
 {
 constexpr double NEVER = std::numeric_limits<double>::infinity();
+/// Steps of one link before it is let go: a linked pair rolls for seconds in steps of milliseconds (a few thousand);
+/// a pair whose steps shrink without end goes on as two balls, whose meetings count as events (max_events).
+constexpr int MAX_LINK_STEPS = 100000;
 
 /// The event loop over all balls. Pair contact times are cached and recomputed only when one of the two balls'
 /// segments has changed. Two balls pressed together are one linked pair (linked_pair.hpp), moved in steps.
@@ -54,6 +59,11 @@ public:
       }
       if (link_time < own_time)
       {
+        // A link's steps record no events, so max_events does not bound them: the wall clock does.
+        if (std::chrono::steady_clock::now() >= deadline_)
+          return Error{ErrorKind::TimeLimitExceeded, "",
+                       "the balls did not come to rest within " + formatNumber(p_.impact.max_seconds) +
+                           " s of computation (a linked pair's steps)"};
         stepLink(link, link_time);
         continue;
       }
@@ -82,6 +92,7 @@ private:
   {
     int a = -1, b = -1;
     double end = NEVER;
+    int steps = 0;
     std::array<MotionEventType, 2> ends{MotionEventType::Rest, MotionEventType::Rest};
   };
 
@@ -110,7 +121,7 @@ private:
         states[m] = endLinkedPhase(link.ends[m], states[m], ball_.radius);
         movers_[balls[m]].recordPhaseChange(t, link.ends[m], states[m]);
       }
-    if (!advanceLink(link, t, states))
+    if (++link.steps > MAX_LINK_STEPS || !advanceLink(link, t, states))
       removeLink(k, t, states);
   }
 
@@ -131,14 +142,28 @@ private:
   /// Lets a link go at t: each ball that still moves goes on its own from its state there.
   void removeLink(int k, double t, const std::array<BallState, 2>& states)
   {
+    const Link link = dissolve(k);
+    goOn(link.a, t, states[0]);
+    goOn(link.b, t, states[1]);
+  }
+
+  /// Removes link k: its balls are no one's partners. Returns it.
+  Link dissolve(int k)
+  {
     const Link link = links_[k];
     links_.erase(links_.begin() + k);
     partner_[link.a] = partner_[link.b] = -1;
-    if (movers_[link.a].status() != BallMover::Status::Ended)
-      movers_[link.a].release(t, states[0]);
-    if (movers_[link.b].status() != BallMover::Status::Ended)
-      movers_[link.b].release(t, states[1]);
+    return link;
   }
+
+  /// Ball m, unless it has ended, goes on alone from `state` at t.
+  void goOn(int m, double t, const BallState& state)
+  {
+    if (movers_[m].status() != BallMover::Status::Ended)
+      movers_[m].release(t, state);
+  }
+
+  void goOn(int m, double t) { goOn(m, t, movers_[m].segment().at(t)); }
 
   int linkOf(int ball) const
   {
@@ -152,13 +177,8 @@ private:
   /// alone.
   void unlink(int ball, double t)
   {
-    const int k = linkOf(ball);
-    const Link link = links_[k];
-    links_.erase(links_.begin() + k);
-    partner_[link.a] = partner_[link.b] = -1;
-    BallMover& other = movers_[link.a == ball ? link.b : link.a];
-    if (other.status() != BallMover::Status::Ended)
-      other.release(t, other.segment().at(t));
+    const Link link = dissolve(linkOf(ball));
+    goOn(link.a == ball ? link.b : link.a, t);
   }
 
   /// Links balls i and j at t where their motion after the impact presses them together.
@@ -170,9 +190,8 @@ private:
       return;
     if (!advanceLink(link, t, states))
     {
-      for (int m : {link.a, link.b})
-        if (movers_[m].status() != BallMover::Status::Ended)
-          movers_[m].release(t, movers_[m].segment().at(t));
+      goOn(link.a, t);
+      goOn(link.b, t);
       return;
     }
     partner_[link.a] = link.b;
@@ -273,12 +292,9 @@ private:
   void unlinkForImpact(int ball, double t, const std::vector<int>& cluster)
   {
     const int partner = partner_[ball];
-    const int k = linkOf(ball);
-    links_.erase(links_.begin() + k);
-    partner_[ball] = partner_[partner] = -1;
-    if (std::find(cluster.begin(), cluster.end(), partner) == cluster.end() &&
-        movers_[partner].status() != BallMover::Status::Ended)
-      movers_[partner].release(t, movers_[partner].segment().at(t));
+    dissolve(linkOf(ball));
+    if (std::find(cluster.begin(), cluster.end(), partner) == cluster.end())
+      goOn(partner, t);
   }
 
   static BallContactSettings plastic(BallContactSettings contact)
