@@ -258,7 +258,8 @@ constexpr double JUMP_RATIO = 0.5;
 /// Replaces each free column of the central-difference Jacobian by the smaller one-sided difference where the two
 /// disagree: the residuals jump within the step there (a track crosses an event — a jaw caught or missed, a cushion
 /// just reached), the central difference spans the jump and claims a precision the data do not hold. Returns the
-/// names of the parameters so treated.
+/// names of the parameters so treated. A parameter whose step would cross a bound keeps its central difference, as
+/// does every one once the budget is spent.
 std::vector<std::string> smoothSideCurvature(const Model& model, const std::vector<FitParameter>& parameters,
                                              LocalFit& fit)
 {
@@ -270,7 +271,10 @@ std::vector<std::string> smoothSideCurvature(const Model& model, const std::vect
     std::vector<double> plus = fit.values, minus = fit.values;
     plus[i] += step;
     minus[i] -= step;
-    if (!evaluate(model, plus, ahead) || !evaluate(model, minus, behind))
+    if (model.secondsLeft() <= 0.0)
+      break;
+    if (plus[i] > parameters[i].upper || minus[i] < parameters[i].lower || !evaluate(model, plus, ahead) ||
+        !evaluate(model, minus, behind))
       continue;
     const Eigen::VectorXd forward = (ahead - fit.residuals) / step, backward = (fit.residuals - behind) / step;
     if ((forward - backward).norm() <= JUMP_RATIO * std::min(forward.norm(), backward.norm()))
@@ -397,13 +401,14 @@ Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
     localFits(model, parameters, rankedStarts(model, parameters, r.squaredNorm(), ESCALATED_STARTS), tried, best);
   if (!best)
     return Error{ErrorKind::NumericalFailure, "parameters", "the model cannot be evaluated along the fit"};
+  const bool out_of_time = model.secondsLeft() <= 0.0;
   const std::vector<std::string> jumped = smoothSideCurvature(model, parameters, *best);
   FitResult result = report(parameters, *best);
   result.initial_cost = 0.5 * r.squaredNorm();
   for (const std::string& name : jumped)
     result.message += " The residuals jump within the difference step of " + name +
                       " (a track crosses an event there): its sigma is taken from the smoother side.";
-  if (model.secondsLeft() <= 0.0)
+  if (out_of_time)
   {
     result.converged = false;
     result.message = "the wall-clock budget ran out; the best point so far. " + result.message;
