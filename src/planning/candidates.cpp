@@ -41,31 +41,36 @@ bool pathIsClear(const Eigen::Vector2d& from, const Eigen::Vector2d& to, const s
   return true;
 }
 
+/// m/s², the rolling deceleration (sliding included) the first speeds assume; the cue ball's speed off the tip over
+/// the cue's.
+constexpr double DECELERATION = 0.5, BALL_OVER_CUE = 1.2;
+
+/// The object ball's speed that carries it `object_path` m and 0.3 m beyond (into the pocket, whatever the refinement
+/// takes off).
+double objectSpeedFor(double object_path)
+{
+  return std::sqrt(2.0 * DECELERATION * (object_path + 0.3));
+}
+
 /// A cue speed that sends the target about `object_path` m and the cue ball `cue_path` m before it, at this cut: the
 /// object ball leaves at (1 + e)/2 cos(cut) of the cue ball's speed and needs v² = 2·a·(path + 0.3 m) with a rolling
 /// deceleration of about 0.5 m/s² (sliding included); the cue ball loses little on the way, and leaves the tip at
 /// about 1.2 times the cue's speed. A starting point: the refinement adjusts it.
 double initialSpeed(double cue_path, double object_path, double cut, const PlanContext& context)
 {
-  constexpr double DECELERATION = 0.5, BALL_OVER_CUE = 1.2;
   const double e = context.configuration.ball_contact.ball_ball.restitution;
-  const double object = std::sqrt(2.0 * DECELERATION * (object_path + 0.3));
+  const double object = objectSpeedFor(object_path);
   const double cue_ball =
       std::sqrt(std::pow(object / (0.5 * (1.0 + e) * std::cos(cut)), 2) + 2.0 * DECELERATION * cue_path);
   const RobotLimits& limits = context.request.limits;
   return std::clamp(cue_ball / BALL_OVER_CUE, limits.min_speed, limits.max_speed);
 }
 
-/// The farthest a frozen target's way to its pocket may turn from the line of centres: the strike's throw turns the
-/// target by a few degrees at most (docs/cue_strike.md, Frozen balls), and the refinement finds it.
-constexpr double FROZEN_MAX_TURN = 8.0 * M_PI / 180.0;
-
 /// A cue ball frozen to the target sends it along their line of centres (turned by the throw): the target leaves with
 /// about half the cue ball's lone speed, as the two balls share the cue's push while they touch.
 double frozenSpeed(double object_path, const PlanContext& context)
 {
-  constexpr double DECELERATION = 0.5, BALL_OVER_CUE = 1.2;
-  const double object = std::sqrt(2.0 * DECELERATION * (object_path + 0.3));
+  const double object = objectSpeedFor(object_path);
   const RobotLimits& limits = context.request.limits;
   return std::clamp(2.0 * object / BALL_OVER_CUE, limits.min_speed, limits.max_speed);
 }
@@ -115,7 +120,9 @@ bool raiseToClear(Stroke& stroke, const PlanContext& context, CandidateSearch& s
 }
 
 /// The target touches the cue ball: the strike moves both at once, and the target leaves along the line of centres
-/// turned by the throw, so the cue aims along that line, turned towards the route by a few times the angle to find.
+/// turned by the throw, so the cue aims along that line, turned towards the route. The throw turns the target by a
+/// fraction of the cue's turn (docs/cue_strike.md, Frozen balls), so the first aim turns the cue three times as far
+/// as the route; the refinement finds the rest.
 void addFrozenCandidate(const TableBall& target, int pocket, const Route& route, const PlanContext& context,
                         CandidateSearch& search)
 {
@@ -125,7 +132,7 @@ void addFrozenCandidate(const TableBall& target, int pocket, const Route& route,
   const double turn = std::atan2(centres.x() * line.y() - centres.y() * line.x(), centres.dot(line));
   if (std::abs(turn) > FROZEN_MAX_TURN)
   {
-    ++search.too_thin;
+    ++search.frozen_off_line;
     return;
   }
   const bool route_blocked = !routeIsClear(

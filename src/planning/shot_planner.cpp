@@ -214,8 +214,9 @@ std::string noPotExplanation(const CandidateSearch& search, const std::vector<Re
 {
   std::string text = std::to_string(search.pairs) + " target–pocket routes: " + std::to_string(search.blocked) +
                      " with a ball in the way (tried last), " + std::to_string(search.too_thin) +
-                     " cut thinner than 80°, " + std::to_string(search.cue_blocked) +
-                     " where the cue cannot clear the balls and rails";
+                     " cut thinner than 80°, " + std::to_string(search.frozen_off_line) +
+                     " frozen to the cue ball more than 8° off their line of centres, " +
+                     std::to_string(search.cue_blocked) + " where the cue cannot clear the balls and rails";
   if (refined.empty())
     return "no shot to try (" + text + ")";
   const RefinedShot& closest = refined.front();
