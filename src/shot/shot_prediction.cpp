@@ -180,6 +180,10 @@ Expected<ShotOutcome> predictShotAfter(const CuePlacement& cue, CueStrikeResult 
     if (other.ball == 0 || other.ball > others.size())
       return invalidArgument("strike.other_balls",
                              "names a ball the table does not have: not the strike of these balls");
+  for (const TouchingBalls& pair : struck.touching_balls)
+    if (pair.first > others.size() || pair.second > others.size() || pair.first == pair.second)
+      return invalidArgument("strike.touching_balls",
+                             "names a ball the table does not have: not the strike of these balls");
   const Eigen::Vector3d centre(cue.ball.x(), cue.ball.y(), c.ball_radius);
   MotionParameters motion = c.motion;
   motion.impact = c.solver;

@@ -166,7 +166,7 @@ TEST(FrozenShots, JammedCueBallIsABoundedImpact)
     EXPECT_LE(ball.velocity.y(), 1e-12);
 }
 
-// predictShotAfter refuses a strike that moved balls these others do not have, naming it.
+// predictShotAfter refuses a strike that moved or paired balls these others do not have, naming it.
 TEST(FrozenShots, StrikeOfOtherBallsIsRefused)
 {
   const Eigen::Vector2d cue_ball(-0.4, 0.1);
@@ -176,6 +176,11 @@ TEST(FrozenShots, StrikeOfOtherBallsIsRefused)
   const auto after = bsp::predictShotAfter(cue, struck.value(), CONFIGURATION);
   ASSERT_FALSE(after.ok());
   EXPECT_EQ(after.error().field, "strike.other_balls");
+  bsp::CueStrikeResult touching_only = struck.value();
+  touching_only.other_balls.clear();
+  const auto paired = bsp::predictShotAfter(cue, touching_only, CONFIGURATION);
+  ASSERT_FALSE(paired.ok());
+  EXPECT_EQ(paired.error().field, "strike.touching_balls");
 }
 
 // Balls overlapping beyond the gap: the ball is named in the request's terms.
