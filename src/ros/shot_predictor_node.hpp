@@ -37,7 +37,6 @@ private:
   /// The cue's pose and the cue ball's position in the table frame; the cue ball's position is left for the table
   /// to give when it holds the cue ball.
   Expected<CuePlacement> placeCue(const PredictShot::Request& request, bool cue_ball_in_table) const;
-  /// `given` (a request's or a goal's table), or the latest one received on ~table_state when it is empty.
   /// The request's table, or the latest ~table_state when it has no balls (Stale when older than
   /// ~table_state_timeout).
   Expected<TableState> tableFor(const TableState& given) const;
