@@ -79,7 +79,7 @@ std::vector<Seed> seeds()
   out.push_back({"draw_end_mass", unwrap(makeImpactProblem(draw), "draw"), {}});
 
   ImpactProblem landing = freeBallProblem(0.17, 0.0286, Eigen::Vector3d(0.5, 0.1, -1.0), Eigen::Vector3d(3, -20, 1));
-  landing.contacts.push_back(makeContact("ball-table", clothContactRows(0.0286), ContactLaw{0.5, 1.0, 0.2, 10.0}));
+  landing.contacts.push_back(makeContact("ball-table", clothContactRows(0.0286), ContactLaw{0.5, 1.0, 0.2, 10.0, {}}));
   out.push_back({"landing", landing, {}});
 
   ImpactProblem wall1;  // one body against a wall, e = 0.5

@@ -101,7 +101,7 @@ void ContactDynamics::springForces(const double* y, const SlipDirections& direct
   {
     const ContactState& contact = contacts_[i];
     const int row = space_.offset[i];
-    f[row] = contact.compliant() ? -contact.stiffness * s[row] : 0.0;
+    f[row] = contact.compliant() ? contact.normalForce(s[row]) : 0.0;
     if (space_.dim[i] != 3)
       continue;
     Eigen::Map<Eigen::Vector2d> tangential(f + row + 1);
@@ -380,7 +380,7 @@ double ContactDynamics::linkForceRate(std::size_t contact, const ForceEvaluation
     if (!state.active())
       continue;
     if (state.compliant())
-      rate(row) = -state.stiffness * w(row);
+      rate(row) = state.normalForceRate(w(row));
     if (space_.dim[i] != 3)
       continue;
     if (!state.slipping)
@@ -402,14 +402,14 @@ double ContactDynamics::strainEnergy(std::size_t contact, const double* y, Force
 {
   const ContactState& state = contacts_[contact];
   const double* s = y + space_.size + space_.offset[contact];
-  const double normal = state.compliant() ? 0.5 * state.stiffness * s[0] * s[0] : 0.0;
+  const double normal = state.compliant() ? state.normalEnergy(s[0]) : 0.0;
   if (space_.dim[contact] != 3 || !state.active())
     return normal;
   if (!state.slipping)
     return normal + 0.5 * state.kappa * (s[1] * s[1] + s[2] * s[2]);
   // On the cone (the spring state only carries the direction): E_t = ½κρ², ρ = μF_n/κ, with F_n the spring's force
   // (then E_t = μ²η²E_n) or a rigid link's constraint force, read from the forces.
-  double normal_force = -state.stiffness * s[0];
+  double normal_force = state.normalForce(s[0]);
   if (!state.compliant())
   {
     forces(y, scratch.force, scratch.directions, scratch.lag);

@@ -37,7 +37,10 @@ struct ContactState
   /// Tangential stiffness κ = k̄ / η̄²; never changes, not even at an end of compression (docs/impact_model.md,
   /// Coulomb friction and tangential compliance).
   double kappa = 1.0;
+  /// The restitution of the current (or last) compression, as normal_law gives it at its end (see restituteAt).
   double restitution = 1.0;
+  double low_speed_restitution = 1.0;  ///< the law's e0: ContactLaw::restitution
+  NormalLaw normal_law;
   double friction = 0.0;
   Eigen::Vector2d slip_direction = Eigen::Vector2d::UnitX();  ///< used while the tangential spring is relaxed
   /// Set when a slip starts from relaxed springs (read through followsSlip()): the slip direction then follows the
@@ -46,6 +49,19 @@ struct ContactState
   /// equation. Released once its relaxation time ρ/|v_t| reaches the quasi-steady limit
   /// (ContactDynamics::relaxationRatio).
   bool quasi_steady = false;
+
+  /// The linear normal spring's force F = −k s, its energy ½ k s² and its rate −k ṡ (dimensionless): the one place
+  /// the spring's law is written (every NormalLaw keeps the spring linear and sets only how k grows).
+  double normalForce(double deformation) const { return -stiffness * deformation; }
+  double normalEnergy(double deformation) const { return 0.5 * stiffness * deformation * deformation; }
+  double normalForceRate(double deformation_rate) const { return -stiffness * deformation_rate; }
+  /// Sets `restitution` to the law's for a compression whose energy-equivalent approach speed is `impact_speed`
+  /// (m/s), and returns it.
+  double restituteAt(double impact_speed)
+  {
+    restitution = restitutionOf(normal_law, low_speed_restitution, impact_speed);
+    return restitution;
+  }
 
   bool active() const { return phase != NormalPhase::Inactive; }
   bool compliant() const { return phase == NormalPhase::Compression || phase == NormalPhase::Restitution; }
@@ -72,6 +88,8 @@ inline ContactState initialContactState(const ContactLaw& law, double stiffness_
   state.stiffness = state.original_stiffness;
   state.kappa = state.original_stiffness / law.eta2;
   state.restitution = law.restitution;
+  state.low_speed_restitution = law.restitution;
+  state.normal_law = law.normal_law;
   state.friction = law.friction;
   return state;
 }

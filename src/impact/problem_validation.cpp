@@ -48,7 +48,7 @@ Status validateLaw(const ContactLaw& law, const std::string& field)
     return invalidArgument(field + ".friction", "must be finite and >= 0, got " + formatNumber(law.friction));
   if (law.friction > 0.0 && (!std::isfinite(law.eta2) || law.eta2 <= 0.0))
     return invalidArgument(field + ".eta2", "must be finite and > 0, got " + formatNumber(law.eta2));
-  return {};
+  return validate(law.normal_law, field + ".normal_law");
 }
 
 Status validateContact(const Contact& contact, Eigen::Index dofs, const std::string& field)

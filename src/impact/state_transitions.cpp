@@ -116,11 +116,21 @@ void makeRigidLink(std::size_t index, const Kinematics& kinematics, double* y, s
   contacts[index].phase = NormalPhase::RigidLink;
 }
 
+/// The energy-equivalent approach speed of a compression that ends with normal deformation s_n (m/s): the speed
+/// at which the contact, alone, would have stored the energy ½ k s_n² it holds, v* = V √(2 E_n W̃_nn) = V |s_n|
+/// √(k W̃_nn). For one contact that is its approach speed exactly; in a multiple impact, the part of the impact's
+/// energy that this contact's spring took (docs/impact_model.md, "Restitution that depends on the impact").
+double compressionSpeed(std::size_t index, double deformation, const ContactState& contact, const ContactSpace& space)
+{
+  const int row = space.offset[index];
+  return space.velocity_scale * std::abs(deformation) * std::sqrt(contact.stiffness * space.delassus(row, row));
+}
+
 bool isChattering(const ContactState& contact, double deformation, const ChatterLimit& chatter)
 {
   if (contact.restitution == 0.0)
     return true;
-  const double stored_energy = 0.5 * contact.stiffness * deformation * deformation;
+  const double stored_energy = contact.normalEnergy(deformation);
   const bool repeated = contact.ends_of_compression >= 3;
   const bool negligible = repeated && stored_energy <= chatter.energy;
   const bool unresolved = repeated && std::abs(deformation) <= chatter.deformation;
@@ -146,6 +156,7 @@ TransitionEvents endCompression(std::size_t index, const Kinematics& kinematics,
     return {ContactEventType::Separation};
   }
   ++contact.ends_of_compression;
+  contact.restituteAt(compressionSpeed(index, s[0], contact, space));
   if (isChattering(contact, s[0], chatter))
   {
     // Limit of infinite stiffness: the remaining normal strain energy (negligible, or lost when e = 0) is dropped.
@@ -169,6 +180,8 @@ TransitionEvents activate(std::size_t index, const Kinematics& kinematics, doubl
   ContactState& contact = contacts[index];
   relaxSprings(y, space, index);
   const double approach = kinematics.velocity(space.offset[index]);
+  if (contact.rigid)
+    contact.restituteAt(std::abs(approach) * space.velocity_scale);
   if (contact.rigid && -contact.restitution * approach > contact.reactivation_speed)
   {
     // A contact of infinite stiffness (a former chattering one) approached at a finite speed: an instantaneous
@@ -534,7 +547,7 @@ void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vecto
     const int row = space.offset[i];
     const double* spring_rate = rates.data() + space.size + row;
     if (contacts[i].compliant())
-      force_rate(row) = -contacts[i].stiffness * spring_rate[0];
+      force_rate(row) = contacts[i].normalForceRate(spring_rate[0]);
     if (contacts[i].compliant() && space.dim[i] == 3)
       force_rate.segment<2>(row + 1) = -contacts[i].kappa * Eigen::Vector2d(spring_rate[1], spring_rate[2]);
   }

@@ -8,7 +8,7 @@ Status validate(const SurfaceContact& surface, const std::string& field)
 {
   return firstError({requireUnitInterval(surface.restitution, field + ".restitution"),
                      requireNonNegative(surface.friction, field + ".friction"),
-                     requirePositive(surface.eta2, field + ".eta2")});
+                     requirePositive(surface.eta2, field + ".eta2"), validate(surface.normal_law, field + ".law")});
 }
 
 }  // namespace billiard_shot_planner

@@ -64,17 +64,27 @@ inline Eigen::Matrix<double, 3, 6> clothContactRows(double radius)
 /// Friction and compliance of one kind of surface contact; its normal stiffness is set by the scenario.
 struct SurfaceContact
 {
+  SurfaceContact() = default;
+  /// {e, μ, η²}, and optionally the law: the constants' usual order, the law last because most contacts keep the
+  /// default.
+  SurfaceContact(double restitution_, double friction_, double eta2_, NormalLaw normal_law_ = {})
+      : restitution(restitution_), friction(friction_), eta2(eta2_), normal_law(normal_law_)
+  {
+  }
+
   double restitution = 1.0;  ///< energetic coefficient e, in [0, 1]
   double friction = 0.0;     ///< Coulomb μ ≥ 0
   double eta2 = 1.0;         ///< η̄² = k̄/κ > 0, normal over tangential stiffness
+  NormalLaw normal_law;      ///< how e depends on the impact (default: constant); configuration's "law"
 };
 
-/// Checks e ∈ [0, 1], μ ≥ 0, η² > 0; the error names the field as `field`.restitution, .friction or .eta2.
+/// Checks e ∈ [0, 1], μ ≥ 0, η² > 0 and the law's parameters; the error names the field as `field`.restitution,
+/// .friction, .eta2 or .law.<parameter>.
 Status validate(const SurfaceContact& surface, const std::string& field);
 
 inline ContactLaw contactLaw(const SurfaceContact& surface, double stiffness)
 {
-  return ContactLaw{surface.restitution, stiffness, surface.friction, surface.eta2};
+  return ContactLaw{surface.restitution, stiffness, surface.friction, surface.eta2, surface.normal_law};
 }
 
 /// Fills a contact from its frame and the rows of its Jacobian in that frame (normal last).
