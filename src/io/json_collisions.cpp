@@ -80,15 +80,13 @@ Expected<json> solveChain(const json& request, const SolverOptions& options)
 }
 namespace
 {
-/// "ball_ball" or "cloth": {"restitution", "friction", "eta2"}, each optional over `surface`.
+/// "ball_ball" or "cloth": {"restitution", "friction", "eta2", "law"}, each optional over `surface`.
 Status readSurface(const json& request, const std::string& key, SurfaceContact& surface)
 {
   auto fields = object(request, key, false);
   if (!fields)
     return fields.error();
-  return readNumbers(fields.value(),
-                     {{"restitution", &surface.restitution}, {"friction", &surface.friction}, {"eta2", &surface.eta2}},
-                     key);
+  return readSurfaceContact(fields.value(), key, surface);
 }
 
 /// The ball–ball friction: a constant "friction", or "friction_model": "alciatore" (or "constant" with "friction").

@@ -1,5 +1,7 @@
 #include "json_fields.hpp"
 
+#include <algorithm>
+
 namespace billiard_shot_planner
 {
 namespace json_io
@@ -112,6 +114,59 @@ Status readNumbers(const json& object, std::initializer_list<std::pair<const cha
       return prefix.empty() ? value.error() : nested(prefix, value.error());
     *target = value.value();
   }
+  return {};
+}
+
+Expected<NormalLaw> normalLawFromJson(const json& law, const std::string& prefix)
+{
+  if (!law.is_object())
+    return invalidArgument(prefix, "must be an object {\"type\": ..., <parameters>}");
+  if (!law.contains("type") || !law.at("type").is_string())
+    return invalidArgument(prefix + ".type", "is required, a string naming the law");
+  auto chosen = lawOfType(law.at("type").get<std::string>(), prefix);
+  if (!chosen)
+    return chosen.error();
+  NormalLaw result = chosen.value();
+  std::vector<std::string> known = {"type"};
+  Status status;
+  visitLawParameters(result,
+                     [&](const char* name, double& value)
+                     {
+                       known.emplace_back(name);
+                       if (status)
+                         status = readNumbers(law, {{name, &value}}, prefix);
+                     });
+  if (!status)
+    return status.error();
+  for (const auto& item : law.items())
+    if (std::find(known.begin(), known.end(), item.key()) == known.end())
+      return invalidArgument(prefix + "." + item.key(),
+                             std::string("is not a parameter of the law \"") + lawType(result) + "\"");
+  if (Status valid = validate(result, prefix); !valid)
+    return valid.error();
+  return result;
+}
+
+json normalLawJson(NormalLaw law)
+{
+  json out{{"type", lawType(law)}};
+  visitLawParameters(law, [&](const char* name, double& value) { out[name] = value; });
+  return out;
+}
+
+Status readSurfaceContact(const json& fields, const std::string& prefix, SurfaceContact& surface, Presence presence)
+{
+  if (Status numbers = readNumbers(
+          fields, {{"restitution", &surface.restitution}, {"friction", &surface.friction}, {"eta2", &surface.eta2}},
+          prefix, presence);
+      !numbers)
+    return numbers;
+  if (!fields.contains("law"))
+    return {};
+  auto law = normalLawFromJson(fields.at("law"), prefix + ".law");
+  if (!law)
+    return law.error();
+  surface.normal_law = law.value();
   return {};
 }
 

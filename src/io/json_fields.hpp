@@ -9,9 +9,11 @@
 
 #include "billiard_shot_planner/core/expected.hpp"
 #include "billiard_shot_planner/impact/impact_result.hpp"
+#include "billiard_shot_planner/impact/laws/normal_law.hpp"
 #include "billiard_shot_planner/impact/solver_options.hpp"
 #include "billiard_shot_planner/motion/table_simulation.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
+#include "billiard_shot_planner/scenarios/sphere_kinematics.hpp"
 
 namespace billiard_shot_planner
 {
@@ -35,6 +37,16 @@ Expected<std::vector<double>> numbers(const json& object, const std::string& key
 /// object[key] as [x, y, z]; `fallback` when absent.
 Expected<Eigen::Vector3d> vector3(const json& object, const std::string& key,
                                   std::optional<Eigen::Vector3d> fallback = std::nullopt);
+/// A contact's constants: {"restitution", "friction", "eta2", "law": {"type", <parameters>}} read from `fields`
+/// into `surface`; with Presence::Optional each keeps the surface's value when absent. Errors name `prefix`.<field>,
+/// a law's unknown type or parameter included (docs/extending.md lists the laws).
+Status readSurfaceContact(const json& fields, const std::string& prefix, SurfaceContact& surface,
+                          Presence presence = Presence::Optional);
+/// "law": {"type": "elastic_plastic", "yield_speed": 1.2}: a type of NormalLaw and its parameters, any absent one at
+/// the law's default; unknown keys refused.
+Expected<NormalLaw> normalLawFromJson(const json& law, const std::string& prefix);
+/// The law as normalLawFromJson reads it.
+json normalLawJson(NormalLaw law);
 /// object[key] as an object (an empty one when absent and optional).
 Expected<json> object(const json& parent, const std::string& key, bool required);
 /// The optional "solver" object.

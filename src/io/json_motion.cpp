@@ -73,9 +73,7 @@ Status readSurface(const json& table, const char* key, SurfaceContact& surface)
     return {};
   if (!table.at(key).is_object())
     return invalidArgument(std::string("table.") + key, "must be an object");
-  return readNumbers(table.at(key),
-                     {{"restitution", &surface.restitution}, {"friction", &surface.friction}, {"eta2", &surface.eta2}},
-                     std::string("table.") + key);
+  return readSurfaceContact(table.at(key), std::string("table.") + key, surface);
 }
 
 Expected<Table> tableField(const json& request, const SurfaceContact* cloth)

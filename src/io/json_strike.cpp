@@ -22,14 +22,8 @@ Expected<SurfaceContact> surfaceContact(const json& request, const std::string& 
   if (!fields)
     return fields.error();
   SurfaceContact surface;
-  for (auto [name, target] : {std::pair{"restitution", &surface.restitution}, std::pair{"friction", &surface.friction},
-                              std::pair{"eta2", &surface.eta2}})
-  {
-    auto value = number(fields.value(), name);
-    if (!value)
-      return nested(key, value.error());
-    *target = value.value();
-  }
+  if (Status status = readSurfaceContact(fields.value(), key, surface, Presence::Required); !status)
+    return status.error();
   return surface;
 }
 

@@ -4,6 +4,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -26,6 +27,43 @@ Status readNumber(const YAML::Node& node, const std::string& key, double& target
   return {};
 }
 
+/// `law: {type: elastic_plastic, yield_speed: 1.2}`: the law's type and its parameters, unknown keys refused.
+Status readLaw(const YAML::Node& node, const std::string& field, NormalLaw& law)
+{
+  if (!node.IsMap() || !node["type"] || !node["type"].IsScalar())
+    return invalidArgument(field + ".type", "is required: the law is a map {type: <name>, <parameters>}");
+  auto chosen = lawOfType(node["type"].Scalar(), field);
+  if (!chosen)
+    return chosen.error();
+  law = chosen.value();
+  std::vector<std::string> known = {"type"};
+  Status status;
+  visitLawParameters(law,
+                     [&](const char* name, double& value)
+                     {
+                       known.emplace_back(name);
+                       if (status)
+                         status = readNumber(node, name, value, field + ".");
+                     });
+  if (!status)
+    return status;
+  for (const auto& item : node)
+  {
+    const std::string key = item.first.as<std::string>();
+    if (std::find(known.begin(), known.end(), key) == known.end())
+    {
+      std::string message = "is not a parameter of the law \"";
+      message += lawType(law);
+      message += '"';
+      std::string name = field;
+      name += '.';
+      name += key;
+      return invalidArgument(name, message);
+    }
+  }
+  return validate(law, field);
+}
+
 Status readSurface(const YAML::Node& node, const std::string& key, SurfaceContact& surface)
 {
   if (!node[key])
@@ -33,7 +71,8 @@ Status readSurface(const YAML::Node& node, const std::string& key, SurfaceContac
   const std::string prefix = "table." + key + ".";
   return firstError({readNumber(node[key], "restitution", surface.restitution, prefix),
                      readNumber(node[key], "friction", surface.friction, prefix),
-                     readNumber(node[key], "eta2", surface.eta2, prefix)});
+                     readNumber(node[key], "eta2", surface.eta2, prefix),
+                     node[key]["law"] ? readLaw(node[key]["law"], prefix + "law", surface.normal_law) : Status{}});
 }
 
 Expected<std::vector<Pocket>> readPockets(const YAML::Node& list)

@@ -301,6 +301,40 @@ TEST(ImpactSolve, BallMotionBadInput)
   }
 }
 
+TEST(ImpactSolve, ContactLawsAreChosenByTypeAndBadOnesNameTheirField)
+{
+  // A ball dropped on a frictionless cloth with the elastic–plastic law: e = e0 · e_T(v), Thornton 1997, eq. 39,
+  // at x = v_y / v = 0.5: √(6√3/5) · √(1 − 0.25/6) · [0.5 / (0.5 + 2√(6/5 − 0.05))]^¼ = 0.93063.
+  const SolverRun drop = runSolver(
+      R"({"problem": "ball_table", "mass": 0.17, "radius": 0.0286, "velocity": [0, 0, -2],
+          "table": {"restitution": 0.9, "friction": 0, "eta2": 1,
+                    "law": {"type": "elastic_plastic", "yield_speed": 1.0}}})");
+  ASSERT_EQ(drop.exit_code, 0) << drop.output;
+  EXPECT_NEAR(nlohmann::json::parse(drop.output)["v"][2].get<double>(), 2.0 * 0.9 * 0.93063, 2e-4) << drop.output;
+
+  const char* cases[][2] = {
+      {R"({"problem": "ball_table", "mass": 0.17, "radius": 0.0286, "velocity": [0, 0, -2],
+           "table": {"restitution": 0.9, "friction": 0, "eta2": 1, "law": {"type": "hertz_typo"}}})",
+       "table.law.type"},
+      {R"({"problem": "ball_table", "mass": 0.17, "radius": 0.0286, "velocity": [0, 0, -2],
+           "table": {"restitution": 0.9, "friction": 0, "eta2": 1, "law": {"type": "elastic_plastic",
+                     "yield_speed": -1}}})",
+       "table.law.yield_speed"},
+      {R"({"problem": "ball_table", "mass": 0.17, "radius": 0.0286, "velocity": [0, 0, -2],
+           "table": {"restitution": 0.9, "friction": 0, "eta2": 1, "law": {"type": "constant", "yield_speed": 1}}})",
+       "table.law.yield_speed"},
+      {R"({"problem": "ball_motion", "position": [0, 0], "v": [1, 0, 0], "omega": [0, 0, 0],
+           "table": {"cushion": {"law": {"yield_speed": 1}}}})",
+       "table.cushion.law.type"},
+  };
+  for (const auto& c : cases)
+  {
+    const SolverRun run = runSolver(c[0]);
+    EXPECT_EQ(run.exit_code, 2) << c[0] << "\n" << run.output;
+    EXPECT_NE(run.output.find(c[1]), std::string::npos) << c[0] << "\n" << run.output;
+  }
+}
+
 TEST(ImpactSolve, MeaninglessInputIsRefusedNotSolved)
 {
   // Finite but absurd values must be refused: solved, they could come back as null (NaN) with exit 0, run out of

@@ -43,3 +43,20 @@ TEST(TableYaml, PartialFilesKeepDefaultsAndBadOnesNameTheField)
   EXPECT_EQ(bsp::parseTableYaml("table: [unclosed").error().field, "table");
   EXPECT_EQ(bsp::loadTableYaml("/nonexistent.yaml").error().field, "table_file");
 }
+
+TEST(TableYaml, AContactsLawIsReadByTypeWithItsParameters)
+{
+  const auto snooker = bsp::loadTableYaml(std::string(CONFIG_DIR) + "/tables/snooker_mathavan.yaml");
+  ASSERT_TRUE(snooker.ok()) << snooker.error().describe();
+  const auto* law = std::get_if<bsp::ElasticPlasticRestitution>(&snooker.value().cushion.normal_law);
+  ASSERT_NE(law, nullptr);
+  EXPECT_GT(law->yield_speed, 0.0);
+  EXPECT_TRUE(std::holds_alternative<bsp::ConstantRestitution>(snooker.value().cloth.normal_law));
+
+  EXPECT_EQ(bsp::parseTableYaml("table: {cushion: {law: {type: hertz_typo}}}").error().field, "table.cushion.law.type");
+  EXPECT_EQ(bsp::parseTableYaml("table: {cushion: {law: {yield_speed: 1}}}").error().field, "table.cushion.law.type");
+  EXPECT_EQ(bsp::parseTableYaml("table: {cloth: {law: {type: elastic_plastic, yield_speed: 0}}}").error().field,
+            "table.cloth.law.yield_speed");
+  EXPECT_EQ(bsp::parseTableYaml("table: {cloth: {law: {type: elastic_plastic, yeild_speed: 1}}}").error().field,
+            "table.cloth.law.yeild_speed");
+}
