@@ -68,6 +68,26 @@ Status readBallContactChoices(const ros::NodeHandle& pnh, BallContactSettings& c
                     std::pair{"constant", BallBallFriction::Constant}, contact.friction_model);
 }
 
+/// ~<contact>/law/type ("constant", "elastic_plastic"): each contact's law, at its default parameters; the law's
+/// own parameters (~table/cushion/law/yield_speed) are numeric parameters, read after it.
+Status readContactLaws(const ros::NodeHandle& pnh, ShotConfiguration& shot)
+{
+  for (auto [contact, surface] :
+       {std::pair{"cue_contact", &shot.cue_contact}, std::pair{"table/cloth", &shot.table.cloth},
+        std::pair{"table/cushion", &shot.table.cushion}, std::pair{"ball_ball", &shot.ball_contact.ball_ball}})
+  {
+    const std::string name = std::string(contact) + "/law";
+    std::string type;
+    if (!pnh.getParam(name + "/type", type))
+      continue;
+    auto law = lawOfType(type, name);
+    if (!law)
+      return namedAsParameter(Status(law.error()));
+    surface->normal_law = law.value();
+  }
+  return {};
+}
+
 Status checkNodeSettings(const NodeSettings& s)
 {
   if (s.target_frame.empty() || s.target_frame.front() == '/')
@@ -100,6 +120,8 @@ Expected<NodeSettings> readSettings(const ros::NodeHandle& pnh)
   int max_shots = static_cast<int>(s.recording.max_shots);
   pnh.param("calibration/max_shots", max_shots, max_shots);
   s.recording.max_shots = static_cast<std::size_t>(std::max(max_shots, 0));
+  if (Status status = readContactLaws(pnh, s.shot); !status)
+    return status.error();
   for (const NamedParameter& parameter : numericParameters(s.shot))
     pnh.param(parameterName(parameter.name), *parameter.value, *parameter.value);
   // In order: what cannot be read, then the node's own settings, then the physics.

@@ -15,6 +15,7 @@
 #include "billiard_shot_planner/scenarios/ball_collision.hpp"
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
+#include "billiard_shot_planner/shot/shot_prediction.hpp"
 
 namespace bsp = billiard_shot_planner;
 
@@ -215,4 +216,17 @@ TEST(NormalLaw, UnknownTypesAndParametersOutOfRangeNameTheirField)
   ASSERT_FALSE(refused.ok());
   EXPECT_EQ(refused.error().code, bsp::ErrorKind::InvalidArgument);
   EXPECT_NE(refused.error().field.find("yield_speed"), std::string::npos) << refused.error().field;
+}
+
+TEST(NormalLaw, ALawsParametersAreConfigurationParameters)
+{
+  // The names every front end reads (node parameters, calibration, overrides) follow the law each contact has.
+  bsp::ShotConfiguration c;
+  c.table.cushion.normal_law = bsp::ElasticPlasticRestitution{1.2};
+  ASSERT_TRUE(bsp::applyOverride(c, "table.cushion.law.yield_speed", 2.0).ok());
+  EXPECT_EQ(std::get<bsp::ElasticPlasticRestitution>(c.table.cushion.normal_law).yield_speed, 2.0);
+  const auto refused = bsp::applyOverride(c, "table.cushion.law.yield_speed", -1.0);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(std::get<bsp::ElasticPlasticRestitution>(c.table.cushion.normal_law).yield_speed, 2.0);  // unchanged
+  EXPECT_FALSE(bsp::applyOverride(c, "table.cloth.law.yield_speed", 2.0).ok());  // the cloth's law is constant
 }

@@ -36,14 +36,16 @@ Status validate(const ShotConfiguration& configuration);
 /// override names are these paths with '/' for '.'.
 struct NamedParameter
 {
-  const char* name;
+  std::string name;
   double* value;
 };
 
 /// Every numeric parameter of the configuration, by name: cue_mass, cue_end_mass, ball_mass, ball_radius,
 /// cue_contact.{restitution,friction,eta2}, stiffness_ratio, table.{length,width,cushion_height,
 /// cushion_stiffness_ratio}, table.cloth.…, table.cushion.…, motion.{gravity,sliding_friction,rolling_friction,
-/// spinning_friction,min_bounce_speed,max_time}, solver.{relative_tolerance,absolute_tolerance,max_seconds}.
+/// spinning_friction,min_bounce_speed,max_time}, solver.{relative_tolerance,absolute_tolerance,max_seconds},
+/// ball_ball.…, and each contact's law's own parameters under `<contact>.law.` ("table.cushion.law.yield_speed")
+/// for the law each contact has.
 std::vector<NamedParameter> numericParameters(ShotConfiguration& configuration);
 
 /// Sets one numeric parameter by name. Errors: unknown name, or a value the configuration rejects (then the
