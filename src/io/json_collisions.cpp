@@ -151,6 +151,16 @@ Expected<BallCollision> ballCollisionFromJson(const json& request)
 Expected<BallContactSettings> ballContactFromJson(const json& request)
 {
   BallCollision collision;
+  if (request.contains("table_file"))
+  {
+    auto loaded = tableFile(request);
+    if (!loaded)
+      return loaded.error();
+    const BallContactSettings& file = loaded.value().ball_contact;  // under the request's own "ball_ball"
+    collision.ball_ball = file.ball_ball;
+    collision.friction_model = file.friction_model;
+    collision.stiffness_ratio = file.stiffness_ratio;
+  }
   auto fields = object(request, "ball_ball", false);
   if (!fields)
     return fields.error();

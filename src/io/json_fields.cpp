@@ -117,6 +117,13 @@ Status readNumbers(const json& object, std::initializer_list<std::pair<const cha
   return {};
 }
 
+Expected<TableFile> tableFile(const json& request)
+{
+  if (!request.at("table_file").is_string())
+    return invalidArgument("table_file", "must be a path");
+  return loadTableFile(request.at("table_file").get<std::string>());
+}
+
 Expected<NormalLaw> normalLawFromJson(const json& law, const std::string& prefix)
 {
   if (!law.is_object())

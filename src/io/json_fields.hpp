@@ -11,6 +11,7 @@
 #include "billiard_shot_planner/impact/impact_result.hpp"
 #include "billiard_shot_planner/impact/laws/normal_law.hpp"
 #include "billiard_shot_planner/impact/solver_options.hpp"
+#include "billiard_shot_planner/io/table_yaml.hpp"
 #include "billiard_shot_planner/motion/table_simulation.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "billiard_shot_planner/scenarios/sphere_kinematics.hpp"
@@ -42,6 +43,9 @@ Expected<Eigen::Vector3d> vector3(const json& object, const std::string& key,
 /// a law's unknown type or parameter included (docs/extending.md lists the laws).
 Status readSurfaceContact(const json& fields, const std::string& prefix, SurfaceContact& surface,
                           Presence presence = Presence::Optional);
+/// The request's "table_file" (config/tables/snooker_mathavan.yaml): the table, its balls, its ball–ball contact and
+/// its cloth's motion constants, which the request's own fields override. Call only when the request has one.
+Expected<TableFile> tableFile(const json& request);
 /// "law": {"type": "elastic_plastic", "yield_speed": 1.2}: a type of NormalLaw and its parameters, any absent one at
 /// the law's default; unknown keys refused.
 Expected<NormalLaw> normalLawFromJson(const json& law, const std::string& prefix);

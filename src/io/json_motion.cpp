@@ -81,12 +81,10 @@ Expected<Table> tableField(const json& request, const SurfaceContact* cloth)
   Table table;
   if (request.contains("table_file"))
   {
-    if (!request.at("table_file").is_string())
-      return invalidArgument("table_file", "must be a path");
-    auto loaded = loadTableYaml(request.at("table_file").get<std::string>());
+    auto loaded = tableFile(request);
     if (!loaded)
       return loaded.error();
-    table = loaded.value();
+    table = loaded.value().table;
   }
   else if (cloth)
   {
@@ -122,6 +120,13 @@ Expected<Table> tableField(const json& request, const SurfaceContact* cloth)
 Expected<MotionParameters> motionParameters(const json& request, const SolverOptions& options)
 {
   MotionParameters p;
+  if (request.contains("table_file"))
+  {
+    auto loaded = tableFile(request);
+    if (!loaded)
+      return loaded.error();
+    p = loaded.value().motion;  // the file's cloth friction, under the request's own fields
+  }
   p.impact = options;
   if (Status status = readNumbers(request, {{"gravity", &p.gravity},
                                             {"sliding_friction", &p.sliding_friction},

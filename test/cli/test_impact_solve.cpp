@@ -335,6 +335,20 @@ TEST(ImpactSolve, ContactLawsAreChosenByTypeAndBadOnesNameTheirField)
   }
 }
 
+TEST(ImpactSolve, ATableFileGivesItsClothsMotionAndRefusesUnknownFields)
+{
+  // The snooker file's sliding friction 0.212: a stun shot at 1 m/s rolls after t = 2v/(7 μ g) = 0.137381 s at 5/7 v.
+  const SolverRun stun = runSolver(
+      R"({"problem": "ball_motion", "position": [0, 0], "v": [1, 0, 0], "omega": [0, 0, 0], "ball_radius": 0.02625,
+          "table_file": ")" +
+      std::string(CONFIG_DIR) + R"(/tables/snooker_mathavan.yaml"})");
+  ASSERT_EQ(stun.exit_code, 0) << stun.output;
+  const auto rolls = nlohmann::json::parse(stun.output)["events"][1];
+  EXPECT_EQ(rolls["type"], "slide_to_roll");
+  EXPECT_NEAR(rolls["t"].get<double>(), 2.0 / (7.0 * 0.212 * 9.81), 1e-9);
+  EXPECT_NEAR(rolls["v"][0].get<double>(), 5.0 / 7.0, 1e-9);
+}
+
 TEST(ImpactSolve, MeaninglessInputIsRefusedNotSolved)
 {
   // Finite but absurd values must be refused: solved, they could come back as null (NaN) with exit 0, run out of

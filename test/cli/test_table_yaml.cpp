@@ -3,6 +3,8 @@
 
 #include "billiard_shot_planner/io/table_yaml.hpp"
 
+#include <utility>
+
 namespace bsp = billiard_shot_planner;
 
 TEST(TableYaml, ShippedNineFootTableEqualsTheDefaults)
@@ -59,4 +61,30 @@ TEST(TableYaml, AContactsLawIsReadByTypeWithItsParameters)
             "table.cloth.law.yield_speed");
   EXPECT_EQ(bsp::parseTableYaml("table: {cloth: {law: {type: elastic_plastic, yeild_speed: 1}}}").error().field,
             "table.cloth.law.yeild_speed");
+}
+
+TEST(TableYaml, AFileGivesItsBallsContactAndMotionAndRefusesUnknownFields)
+{
+  const auto snooker = bsp::loadTableFile(std::string(CONFIG_DIR) + "/tables/snooker_mathavan.yaml");
+  ASSERT_TRUE(snooker.ok()) << snooker.error().describe();
+  EXPECT_EQ(snooker.value().ball.mass, 0.1406);  // the papers' snooker balls
+  EXPECT_EQ(snooker.value().ball.radius, 0.02625);
+  EXPECT_EQ(snooker.value().ball_contact.friction_model, bsp::BallBallFriction::Constant);
+  EXPECT_EQ(snooker.value().motion.sliding_friction, 0.212);
+
+  const std::pair<const char*, const char*> bad[] = {
+      {"table: {lenght: 3}", "table.lenght"},
+      {"table: {}\nballs: {mass: 0.2, colour: red}", "balls.colour"},
+      {"table: {}\nball_ball: {friction_model: magic}", "ball_ball.friction_model"},
+      {"table: {}\nball_ball: {restitution: 2}", "ball_ball.restitution"},
+      {"table: {}\nmotion: {sliding_friction: -1}", "motion.sliding_friction"},
+      {"table: {}\ncue: {}", "cue"},
+      {"table: {cushion: {restitution: 0.8, frition: 0.1}}", "table.cushion.frition"},
+  };
+  for (const auto& [text, field] : bad)
+  {
+    const auto file = bsp::parseTableFile(text);
+    ASSERT_FALSE(file.ok()) << text;
+    EXPECT_EQ(file.error().field, field) << text;
+  }
 }
