@@ -86,6 +86,10 @@ Status readSurface(const json& request, const std::string& key, SurfaceContact& 
   auto fields = object(request, key, false);
   if (!fields)
     return fields.error();
+  // The ball–ball object also holds its friction model and the cloth's stiffness relative to it.
+  if (key == "ball_ball")
+    return readSurfaceContact(fields.value(), key, surface, Presence::Optional,
+                              {"friction_model", "cloth_stiffness_ratio"});
   return readSurfaceContact(fields.value(), key, surface);
 }
 

@@ -161,8 +161,22 @@ json normalLawJson(NormalLaw law)
   return out;
 }
 
-Status readSurfaceContact(const json& fields, const std::string& prefix, SurfaceContact& surface, Presence presence)
+Status onlyKnownKeys(const json& object, std::initializer_list<const char*> known, const std::string& prefix,
+                     std::initializer_list<const char*> also_known)
 {
+  const auto listed = [](std::initializer_list<const char*> names, const std::string& key)
+  { return std::any_of(names.begin(), names.end(), [&](const char* name) { return key == name; }); };
+  for (const auto& item : object.items())
+    if (!listed(known, item.key()) && !listed(also_known, item.key()))
+      return invalidArgument(prefix.empty() ? item.key() : prefix + "." + item.key(), "is not a field here");
+  return {};
+}
+
+Status readSurfaceContact(const json& fields, const std::string& prefix, SurfaceContact& surface, Presence presence,
+                          std::initializer_list<const char*> also_known)
+{
+  if (Status known = onlyKnownKeys(fields, {"restitution", "friction", "eta2", "law"}, prefix, also_known); !known)
+    return known;
   if (Status numbers = readNumbers(
           fields, {{"restitution", &surface.restitution}, {"friction", &surface.friction}, {"eta2", &surface.eta2}},
           prefix, presence);

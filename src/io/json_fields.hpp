@@ -42,7 +42,11 @@ Expected<Eigen::Vector3d> vector3(const json& object, const std::string& key,
 /// into `surface`; with Presence::Optional each keeps the surface's value when absent. Errors name `prefix`.<field>,
 /// a law's unknown type or parameter included (docs/extending.md lists the laws).
 Status readSurfaceContact(const json& fields, const std::string& prefix, SurfaceContact& surface,
-                          Presence presence = Presence::Optional);
+                          Presence presence = Presence::Optional, std::initializer_list<const char*> also_known = {});
+/// Refuses a key of `object` that neither `known` nor `also_known` lists: a misspelt constant is an error, not a
+/// default. The error names `prefix`.<key>.
+Status onlyKnownKeys(const json& object, std::initializer_list<const char*> known, const std::string& prefix,
+                     std::initializer_list<const char*> also_known = {});
 /// The request's "table_file" (config/tables/snooker_mathavan.yaml): the table, its balls, its ball–ball contact and
 /// its cloth's motion constants, which the request's own fields override. Call only when the request has one.
 Expected<TableFile> tableFile(const json& request);

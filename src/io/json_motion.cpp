@@ -94,6 +94,10 @@ Expected<Table> tableField(const json& request, const SurfaceContact* cloth)
   if (!fields)
     return fields.error();
   const json& t = fields.value();
+  if (Status known = onlyKnownKeys(
+          t, {"length", "width", "cushion_height", "cushion_stiffness_ratio", "pockets", "cloth", "cushion"}, "table");
+      !known)
+    return known.error();
   if (Status status = readNumbers(t,
                                   {{"length", &table.length},
                                    {"width", &table.width},

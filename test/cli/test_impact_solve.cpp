@@ -326,6 +326,15 @@ TEST(ImpactSolve, ContactLawsAreChosenByTypeAndBadOnesNameTheirField)
       {R"({"problem": "ball_motion", "position": [0, 0], "v": [1, 0, 0], "omega": [0, 0, 0],
            "table": {"cushion": {"law": {"yield_speed": 1}}}})",
        "table.cushion.law.type"},
+      {R"({"problem": "ball_table", "mass": 0.17, "radius": 0.0286, "velocity": [0, 0, -2],
+           "table": {"restitution": 0.9, "friction": 0, "eta2": 1, "lawz": {"type": "constant"}}})",
+       "table.lawz"},
+      {R"({"problem": "ball_motion", "position": [0, 0], "v": [1, 0, 0], "omega": [0, 0, 0],
+           "table": {"lenght": 3}})",
+       "table.lenght"},
+      {R"({"problem": "ball_ball", "balls": [{"position": [0, 0], "v": [1, 0, 0]}, {"position": [0.0572, 0]}],
+           "cloth": {"friction": 0.2, "friction_model": "constant"}})",
+       "cloth.friction_model"},
   };
   for (const auto& c : cases)
   {
