@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "named_values.hpp"
+
 #include "billiard_shot_planner/impact/laws/normal_law.hpp"
 #include "billiard_shot_planner/scenarios/cushion_impact.hpp"
 
@@ -21,41 +23,20 @@ void visitReboundValues(CushionReboundTable& table, Visitor&& visit)
                      [&](const char* name, double& value) { visit(std::string("cushion.law.") + name, value); });
 }
 
-std::string indexed(const std::string& name, std::size_t i)
-{
-  return name + "[" + std::to_string(i) + "]";
-}
 }  // namespace
 
 std::vector<std::string> reboundParameters(const CushionReboundTable& table)
 {
-  CushionReboundTable copy = table;
-  std::vector<std::string> names;
-  visitReboundValues(copy, [&](const std::string& name, double& /*value*/) { names.push_back(name); });
-  return names;
+  return namedValues(table, [](CushionReboundTable& model, auto&& visit) { visitReboundValues(model, visit); });
 }
 
 Status applyReboundValues(const std::vector<std::string>& names, const std::vector<double>& values,
                           CushionReboundTable& table)
 {
-  for (std::size_t i = 0; i < names.size(); ++i)
-  {
-    bool found = false;
-    visitReboundValues(table,
-                       [&](const std::string& name, double& value)
-                       {
-                         if (name == names[i])
-                         {
-                           value = values[i];
-                           found = true;
-                         }
-                       });
-    if (!found)
-      return invalidArgument(names[i],
-                             "is not a parameter of a cushion rebound (the cushion's constants, its law's "
-                             "and cushion_stiffness_ratio)");
-  }
-  return {};
+  return applyNamedValues(
+      names, values, table, [](CushionReboundTable& model, auto&& visit) { visitReboundValues(model, visit); },
+      "is not a parameter of a cushion rebound (the cushion's constants, its law's "
+      "and cushion_stiffness_ratio)");
 }
 
 Expected<double> predictRebound(const CushionReboundTable& table, double speed_in, const SolverOptions& options)
@@ -92,17 +73,12 @@ Expected<FitResult> fitCushionRebounds(const CushionReboundTable& table, const s
   {
     const CushionRebound& rebound = rebounds[i];
     if (!(rebound.speed_in > 0.0) || !std::isfinite(rebound.speed_in))
-      return invalidArgument(indexed("rebounds", i) + ".speed_in", "must be finite and > 0");
+      return invalidArgument(indexedField("rebounds", i) + ".speed_in", "must be finite and > 0");
     if (!(rebound.speed_out >= 0.0) || !std::isfinite(rebound.speed_out))
-      return invalidArgument(indexed("rebounds", i) + ".speed_out", "must be finite and >= 0");
+      return invalidArgument(indexedField("rebounds", i) + ".speed_out", "must be finite and >= 0");
   }
-  std::vector<std::string> names;
-  std::vector<double> starts;
-  for (const FitParameter& parameter : parameters)
-  {
-    names.push_back(parameter.name);
-    starts.push_back(parameter.start);
-  }
+  const std::vector<std::string> names = parameterNames(parameters);
+  const std::vector<double> starts = parameterStarts(parameters);
   CushionReboundTable start = table;
   if (Status applied = applyReboundValues(names, starts, start); !applied)
     return applied.error();

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "named_values.hpp"
+
 #include "billiard_shot_planner/impact/laws/normal_law.hpp"
 
 namespace billiard_shot_planner
@@ -24,11 +26,6 @@ void visitCollisionValues(RollingCollisionTable& table, Visitor&& visit)
                      [&](const char* name, double& value) { visit(std::string("ball_ball.law.") + name, value); });
 }
 
-std::string indexed(const std::string& name, std::size_t i)
-{
-  return name + "[" + std::to_string(i) + "]";
-}
-
 /// The ball's speed at its first change from sliding to rolling after its first meeting with the other ball.
 double rollingSpeedAfterMeeting(const BallTrajectory& path)
 {
@@ -45,33 +42,16 @@ double rollingSpeedAfterMeeting(const BallTrajectory& path)
 
 std::vector<std::string> rollingCollisionParameters(const RollingCollisionTable& table)
 {
-  RollingCollisionTable copy = table;
-  std::vector<std::string> names;
-  visitCollisionValues(copy, [&](const std::string& name, double& /*value*/) { names.push_back(name); });
-  return names;
+  return namedValues(table, [](RollingCollisionTable& model, auto&& visit) { visitCollisionValues(model, visit); });
 }
 
 Status applyRollingCollisionValues(const std::vector<std::string>& names, const std::vector<double>& values,
                                    RollingCollisionTable& table)
 {
-  for (std::size_t i = 0; i < names.size(); ++i)
-  {
-    bool found = false;
-    visitCollisionValues(table,
-                         [&](const std::string& name, double& value)
-                         {
-                           if (name == names[i])
-                           {
-                             value = values[i];
-                             found = true;
-                           }
-                         });
-    if (!found)
-      return invalidArgument(names[i],
-                             "is not a parameter of a ball-ball collision (the ball_ball contact's "
-                             "constants, its law's and ball_ball.cloth_stiffness_ratio)");
-  }
-  return {};
+  return applyNamedValues(
+      names, values, table, [](RollingCollisionTable& model, auto&& visit) { visitCollisionValues(model, visit); },
+      "is not a parameter of a ball-ball collision (the ball_ball contact's "
+      "constants, its law's and ball_ball.cloth_stiffness_ratio)");
 }
 
 Expected<std::pair<double, double>> predictRollingCollision(const RollingCollisionTable& table, double speed_in,
@@ -115,19 +95,14 @@ Expected<FitResult> fitRollingCollisions(const RollingCollisionTable& table,
   {
     const RollingCollision& c = collisions[i];
     if (!(c.speed_in > 0.0) || !std::isfinite(c.speed_in))
-      return invalidArgument(indexed("collisions", i) + ".speed_in", "must be finite and > 0");
+      return invalidArgument(indexedField("collisions", i) + ".speed_in", "must be finite and > 0");
     if (!(std::abs(c.cut) < 0.5 * M_PI))
-      return invalidArgument(indexed("collisions", i) + ".cut", "must be within (-90, 90) degrees");
+      return invalidArgument(indexedField("collisions", i) + ".cut", "must be within (-90, 90) degrees");
     if (!(c.cue_speed_out >= 0.0 && c.object_speed_out >= 0.0) || !std::isfinite(c.cue_speed_out + c.object_speed_out))
-      return invalidArgument(indexed("collisions", i) + ".speed_out", "must be finite and >= 0");
+      return invalidArgument(indexedField("collisions", i) + ".speed_out", "must be finite and >= 0");
   }
-  std::vector<std::string> names;
-  std::vector<double> starts;
-  for (const FitParameter& parameter : parameters)
-  {
-    names.push_back(parameter.name);
-    starts.push_back(parameter.start);
-  }
+  const std::vector<std::string> names = parameterNames(parameters);
+  const std::vector<double> starts = parameterStarts(parameters);
   RollingCollisionTable start = table;
   if (Status applied = applyRollingCollisionValues(names, starts, start); !applied)
     return applied.error();
