@@ -134,21 +134,18 @@ Expected<NormalLaw> normalLawFromJson(const json& law, const std::string& prefix
   if (!chosen)
     return chosen.error();
   NormalLaw result = chosen.value();
-  std::vector<std::string> known = {"type"};
   Status status;
   visitLawParameters(result,
                      [&](const char* name, double& value)
                      {
-                       known.emplace_back(name);
                        if (status)
                          status = readNumbers(law, {{name, &value}}, prefix);
                      });
   if (!status)
     return status.error();
   for (const auto& item : law.items())
-    if (std::find(known.begin(), known.end(), item.key()) == known.end())
-      return invalidArgument(prefix + "." + item.key(),
-                             std::string("is not a parameter of the law \"") + lawType(result) + "\"");
+    if (Status key = requireLawKey(result, item.key(), prefix); !key)
+      return key.error();
   if (Status valid = validate(result, prefix); !valid)
     return valid.error();
   return result;

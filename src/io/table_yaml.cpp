@@ -54,31 +54,18 @@ Status readLaw(const YAML::Node& node, const std::string& field, NormalLaw& law)
   if (!chosen)
     return chosen.error();
   law = chosen.value();
-  std::vector<std::string> known = {"type"};
   Status status;
   visitLawParameters(law,
                      [&](const char* name, double& value)
                      {
-                       known.emplace_back(name);
                        if (status)
                          status = readNumber(node, name, value, field + ".");
                      });
   if (!status)
     return status;
   for (const auto& item : node)
-  {
-    const std::string key = item.first.as<std::string>();
-    if (std::find(known.begin(), known.end(), key) == known.end())
-    {
-      std::string message = "is not a parameter of the law \"";
-      message += lawType(law);
-      message += '"';
-      std::string name = field;
-      name += '.';
-      name += key;
-      return invalidArgument(name, message);
-    }
-  }
+    if (Status key = requireLawKey(law, item.first.as<std::string>(), field); !key)
+      return key;
   return validate(law, field);
 }
 

@@ -53,6 +53,19 @@ Status validate(const NormalLaw& law, const std::string& field)
   return std::visit([&](const auto& alternative) { return alternative.validate(field); }, law);
 }
 
+Status requireLawKey(const NormalLaw& law, const std::string& key, const std::string& field)
+{
+  bool known = key == "type";
+  NormalLaw copy = law;
+  visitLawParameters(copy, [&](const char* name, double& /*value*/) { known = known || key == name; });
+  if (known)
+    return {};
+  std::string message = "is not a parameter of the law \"";
+  message += lawType(law);
+  message += '"';
+  return invalidArgument(field + "." + key, message);
+}
+
 double restitutionOf(const NormalLaw& law, double low_speed_restitution, double impact_speed)
 {
   return std::visit(

@@ -24,6 +24,9 @@ std::vector<std::string> lawTypes();
 Expected<NormalLaw> lawOfType(const std::string& type, const std::string& field);
 /// The law's parameters checked, each error naming `field`.<parameter>.
 Status validate(const NormalLaw& law, const std::string& field);
+/// A key of a law's configuration: "type" or one of the law's parameters. Error: InvalidArgument naming
+/// `field`.<key>, for a key the law does not have (a misspelt parameter is an error, not a default).
+Status requireLawKey(const NormalLaw& law, const std::string& key, const std::string& field);
 /// The restitution of one compression: e0 = `low_speed_restitution` under the law, at the energy-equivalent
 /// approach speed `impact_speed` (m/s; docs/impact_model.md, "Restitution that depends on the impact").
 double restitutionOf(const NormalLaw& law, double low_speed_restitution, double impact_speed);
