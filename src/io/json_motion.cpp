@@ -1,4 +1,6 @@
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "billiard_shot_planner/io/table_yaml.hpp"
 #include "billiard_shot_planner/motion/ball_motion.hpp"
@@ -76,15 +78,13 @@ Status readSurface(const json& table, const char* key, SurfaceContact& surface)
   return readSurfaceContact(table.at(key), std::string("table.") + key, surface);
 }
 
-Expected<Table> tableField(const json& request, const SurfaceContact* cloth)
+/// The request's "table" over the table file's (`file`, when the request names one) or over the defaults.
+Expected<Table> tableField(const json& request, const SurfaceContact* cloth, const TableFile* file)
 {
   Table table;
-  if (request.contains("table_file"))
+  if (file)
   {
-    auto loaded = tableFile(request);
-    if (!loaded)
-      return loaded.error();
-    table = loaded.value().table;
+    table = file->table;
   }
   else if (cloth)
   {
@@ -121,16 +121,10 @@ Expected<Table> tableField(const json& request, const SurfaceContact* cloth)
   return table;
 }
 
-Expected<MotionParameters> motionParameters(const json& request, const SolverOptions& options)
+/// The request's motion fields over `base` (the table file's cloth friction, or the defaults).
+Expected<MotionParameters> motionParameters(const json& request, const SolverOptions& options, MotionParameters base)
 {
-  MotionParameters p;
-  if (request.contains("table_file"))
-  {
-    auto loaded = tableFile(request);
-    if (!loaded)
-      return loaded.error();
-    p = loaded.value().motion;  // the file's cloth friction, under the request's own fields
-  }
+  MotionParameters p = std::move(base);
   p.impact = options;
   if (Status status = readNumbers(request, {{"gravity", &p.gravity},
                                             {"sliding_friction", &p.sliding_friction},
@@ -200,11 +194,19 @@ Expected<MotionSetup> motionSetup(const json& request, const SolverOptions& opti
 {
   MotionSetup setup;
   setup.ball = ball;
-  auto table = tableField(request, cloth);
+  std::optional<TableFile> file;  // read once, for the table and the motion
+  if (request.contains("table_file"))
+  {
+    auto loaded = tableFile(request);
+    if (!loaded)
+      return loaded.error();
+    file = loaded.value();
+  }
+  auto table = tableField(request, cloth, file ? &*file : nullptr);
   if (!table)
     return table.error();
   setup.table = table.value();
-  auto parameters = motionParameters(request, options);
+  auto parameters = motionParameters(request, options, file ? file->motion : MotionParameters{});
   if (!parameters)
     return parameters.error();
   setup.parameters = parameters.value();
