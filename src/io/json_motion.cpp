@@ -1,6 +1,5 @@
 #include <optional>
 #include <string>
-#include <utility>
 
 #include "billiard_shot_planner/io/table_yaml.hpp"
 #include "billiard_shot_planner/motion/ball_motion.hpp"
@@ -122,9 +121,10 @@ Expected<Table> tableField(const json& request, const SurfaceContact* cloth, con
 }
 
 /// The request's motion fields over `base` (the table file's cloth friction, or the defaults).
-Expected<MotionParameters> motionParameters(const json& request, const SolverOptions& options, MotionParameters base)
+Expected<MotionParameters> motionParameters(const json& request, const SolverOptions& options,
+                                            const MotionParameters& base)
 {
-  MotionParameters p = std::move(base);
+  MotionParameters p = base;
   p.impact = options;
   if (Status status = readNumbers(request, {{"gravity", &p.gravity},
                                             {"sliding_friction", &p.sliding_friction},
