@@ -11,10 +11,10 @@ namespace
 {
 Status check(const BallBallTable& c)
 {
-  if (Status status =
-          firstError({requirePositive(c.m1, "m1"), requirePositive(c.m2, "m2"),
-                      requirePositive(c.stiffness_ratio, "stiffness_ratio"), requireUnitInterval(c.e1, "e1"),
-                      requireUnitInterval(c.e2, "e2"), requireFinite(c.v0, "v0")});
+  if (Status status = firstError(
+          {requirePositive(c.m1, "m1"), requirePositive(c.m2, "m2"), requireMassRatio(c.m1 / c.m2, "m2", "m1/m2"),
+           requireStiffnessRatio(c.stiffness_ratio, "stiffness_ratio"), requireUnitInterval(c.e1, "e1"),
+           requireUnitInterval(c.e2, "e2"), requireFinite(c.v0, "v0")});
       !status)
     return status;
   if (c.v0 >= 0.0)

@@ -1,8 +1,10 @@
 #include "billiard_shot_planner/scenarios/ball_chain.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
 
 namespace billiard_shot_planner
@@ -47,6 +49,24 @@ Status checkValues(const BallChain& chain)
   }
   return {};
 }
+
+/// Masses within MAX_MASS_RATIO of each other, and every contact's stiffness within [MIN_STIFFNESS_RATIO,
+/// MAX_STIFFNESS_RATIO] of the first's, as every other problem states its stiffnesses.
+Status checkRatios(const BallChain& chain)
+{
+  const auto [lightest, heaviest] = std::minmax_element(chain.masses.begin(), chain.masses.end());
+  const auto light = static_cast<std::size_t>(lightest - chain.masses.begin());
+  const auto heavy = static_cast<std::size_t>(heaviest - chain.masses.begin());
+  if (Status status = requireMassRatio(*heaviest / *lightest, indexed("masses", light),
+                                       indexed("masses", heavy) + "/" + indexed("masses", light));
+      !status)
+    return status;
+  for (std::size_t i = 1; i < chain.contactCount(); ++i)
+    if (Status status = requireStiffnessRatio(chain.stiffness[i] / chain.stiffness[0], indexed("stiffness", i));
+        !status)
+      return status;
+  return {};
+}
 }  // namespace
 
 Expected<ImpactProblem> makeImpactProblem(const BallChain& chain)
@@ -54,6 +74,8 @@ Expected<ImpactProblem> makeImpactProblem(const BallChain& chain)
   if (Status status = checkSizes(chain); !status)
     return status.error();
   if (Status status = checkValues(chain); !status)
+    return status.error();
+  if (Status status = checkRatios(chain); !status)
     return status.error();
   const auto balls = static_cast<Eigen::Index>(chain.masses.size());
   ImpactProblem problem;

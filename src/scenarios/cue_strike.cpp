@@ -35,7 +35,11 @@ Status checkStrike(const CueStrike& s)
            requirePlausibleSpeed(s.cue_speed, "cue_speed"), requirePositive(s.ball_mass, "ball_mass"),
            requirePositive(s.ball_radius, "ball_radius"), requireDirection(s.hit_normal, "hit_normal"),
            validate(s.cue_contact, "cue_contact"), validate(s.table_contact, "table_contact"),
-           requireStiffnessRatio(s.stiffness_ratio, "stiffness_ratio")});
+           requireStiffnessRatio(s.stiffness_ratio, "stiffness_ratio"),
+           requireMassRatio(s.cue_mass / s.ball_mass, "cue_mass", "cue_mass/ball_mass"),
+           std::isinf(s.cue_end_mass)
+               ? Status{}
+               : requireMassRatio(s.cue_end_mass / s.ball_mass, "cue_end_mass", "cue_end_mass/ball_mass")});
       !status)
     return status;
   return checkApproach(s.hit_normal.normalized(), s.cue_direction.normalized());

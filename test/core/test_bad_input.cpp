@@ -104,6 +104,40 @@ TEST(BadInput, ScenarioBuildersNameTheirOwnFields)
   EXPECT_EQ(bsp::solve(chain).error().code, bsp::ErrorKind::NoApproachingContact);
 }
 
+TEST(BadInput, EveryProblemStatesItsRangeOfMassAndStiffnessRatios)
+{
+  // Found by fuzzing: a ball–ball–table collision accepted a stiffness ratio of 336 where every other problem
+  // refuses ratios outside [0.01, 100]; at m1/m2 = 5e9 its energy rose by 2.8e-8 of the initial (the light
+  // ball's energy below the heavy one's round-off); three-ball chains with masses over nine decades ran into the
+  // time bound (a light ball rattling between heavy ones at √(mass ratio) times the collision's frequency).
+  bsp::BallBallTable c;
+  c.stiffness_ratio = 336.0;
+  EXPECT_EQ(bsp::solve(c).error().field, "stiffness_ratio");
+  c = {};
+  c.m1 = 6067.0;
+  c.m2 = 1.26e-6;
+  c.e2 = 0.234;
+  c.v0 = -1.27e-4;
+  const auto heavy_on_light = bsp::solve(c);
+  ASSERT_FALSE(heavy_on_light.ok());
+  EXPECT_EQ(heavy_on_light.error().code, bsp::ErrorKind::InvalidArgument);
+  EXPECT_EQ(heavy_on_light.error().field, "m2");
+  EXPECT_NE(heavy_on_light.error().message.find("m1/m2"), std::string::npos);
+  c.m1 = 1e6 * c.m2;  // the edge of the range is accepted
+  EXPECT_TRUE(bsp::solve(c).ok());
+
+  bsp::BallChain chain{{10614.5, 575.848, 4.03379e-05},
+                       {1.89787, -0.0304822, 0.0},
+                       {0.179486, 0.760026, 66.4968},
+                       {0.813244, 0.634124, 0.33654},
+                       true};
+  EXPECT_EQ(bsp::solve(chain).error().field, "masses[2]");
+  chain.masses = {1.0, 1.0, 1.0};
+  EXPECT_EQ(bsp::solve(chain).error().field, "stiffness[2]");  // 66.5/0.179 = 370 times the first
+  chain.stiffness[2] = 17.0;
+  EXPECT_TRUE(bsp::solve(chain).ok());
+}
+
 TEST(BadInput, EventLimitStopsInsteadOfLooping)
 {
   bsp::BallBallTable c;

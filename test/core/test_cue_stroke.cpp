@@ -214,17 +214,20 @@ TEST(CueStroke, ALighterEndMassSquirtsLess)
 
 TEST(CueStroke, AHeavyEndMassTendsToTheCueHeldOnItsAxis)
 {
-  // The paper's shooter is the limit of an infinite end mass: at 1e9 kg the tip moves across by 1e-10 of the ball.
+  // The paper's shooter is the limit of an infinite end mass: at 1e5 kg, near the largest end mass accepted
+  // (MAX_MASS_RATIO of the ball's), the tip moves across by about m_ball/m_end = 1.7e-6 of the ball, and the
+  // answer departs from the limit by that order.
   for (const auto& [theta, a, b] : {std::tuple{0.0, 0.3, 0.0}, std::tuple{0.0, 0.0, -0.4}, std::tuple{60.0, 0.2, 0.4}})
   {
     bsp::CueStrike held = stroke(theta, a, b, bsp::CUE_HELD_ON_AXIS);
     held.table_contact = {0.51625, 0.152479, 10.0};
     bsp::CueStrike heavy = held;
-    heavy.cue_end_mass = 1e9;
+    heavy.cue_end_mass = 1e5;
     const auto r = solved(held), h = solved(heavy);
     EXPECT_EQ(r.states, h.states);
-    EXPECT_LE((r.velocity - h.velocity).norm(), 1e-7 * r.velocity.norm());
-    EXPECT_LE((r.angular_velocity - h.angular_velocity).norm() * BALL_RADIUS, 1e-7 * r.velocity.norm());
+    const double order = heavy.ball_mass / heavy.cue_end_mass;
+    EXPECT_LE((r.velocity - h.velocity).norm(), order * r.velocity.norm());
+    EXPECT_LE((r.angular_velocity - h.angular_velocity).norm() * BALL_RADIUS, order * r.velocity.norm());
     EXPECT_EQ(bsp::makeImpactProblem(held).value().mass_matrix.rows(), 7);  // the paper's eq. (48): tip on its axis
     EXPECT_EQ(bsp::makeImpactProblem(heavy).value().mass_matrix.rows(), 9);
   }

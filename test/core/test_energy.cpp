@@ -223,7 +223,8 @@ TEST(EnergyNeverRises, NearlyPlasticAndLongChattersEndInClosedForm)
       {0.0031599536823083236, 3.5031384251408904, 2.5452018719371594, 4.0848965980343508e-06, 0.94870468620163428,
        -0.20752464818719216},
       {117.06566667285618, 0.00013337200735341593, 2.6240186740620928, 0.97921859229381303, 1.0, -0.70313843118680741},
-      {436.56874020348454, 0.00096533683169243846, 266.57609721828447, 0.25310671815998342, 1.0, -3.7774493608592032},
+      // Found with a stiffness ratio of 267; 100, the largest accepted (MAX_STIFFNESS_RATIO), chatters as long.
+      {436.56874020348454, 0.00096533683169243846, 100.0, 0.25310671815998342, 1.0, -3.7774493608592032},
       {446.46381602131879, 0.00077838870397404451, 5.2936243914180432, 0.30586172779928078, 1.0, -0.16367132917092272},
   };
   bsp::SolverOptions integrated = slowMachineBound();
@@ -245,9 +246,9 @@ TEST(EnergyNeverRises, NearlyPlasticAndLongChattersEndInClosedForm)
 TEST(EnergyNeverRises, RandomCollisionsOverExtremeRanges)
 {
   // Smaller versions of the sweeps of issue 23: mass ratios log-uniform up to 1e6 either way, stiffness ratios
-  // 1e-3…1e3, restitutions in [0, 1] with exact 0 and 1 among them, cues of up to 1e4 kg, tips down to e = 1e-12,
-  // friction up to 5. In the issue's sweeps, 1 of 2 000 collisions and 14 of 1 000 strikes gained energy (up to 20
-  // times it), and 1 and 18 did not end.
+  // over the accepted 1e-2…1e2 (MAX_MASS_RATIO, MAX_STIFFNESS_RATIO), restitutions in [0, 1] with exact 0 and 1 among
+  // them, cues of up to 1e4 kg, tips down to e = 1e-12, friction up to 5. In the issue's sweeps, 1 of 2 000 collisions
+  // and 14 of 1 000 strikes gained energy (up to 20 times it), and 1 and 18 did not end.
   std::mt19937_64 rng(23);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const auto logUniform = [&](double lo, double hi)
@@ -263,7 +264,7 @@ TEST(EnergyNeverRises, RandomCollisionsOverExtremeRanges)
     const double ratio = logUniform(1e-6, 1e6);
     c.m1 = std::sqrt(ratio) * logUniform(0.1, 10.0);
     c.m2 = c.m1 / ratio;
-    c.stiffness_ratio = logUniform(1e-3, 1e3);
+    c.stiffness_ratio = logUniform(1e-2, 1e2);
     c.e1 = restitution(1e-6);
     c.e2 = restitution(1e-6);
     c.v0 = -logUniform(0.1, 10.0);
@@ -311,7 +312,7 @@ TEST(EnergyNeverRises, RandomCollisionsOverExtremeRanges)
     }
     for (std::size_t i = 0; i < chain.contactCount(); ++i)
     {
-      chain.stiffness.push_back(logUniform(1e-2, 1e2));
+      chain.stiffness.push_back(i == 0 ? 1.0 : logUniform(1e-2, 1e2));
       chain.restitution.push_back(restitution(1e-9));
     }
     const auto result = bsp::solve(chain, slowMachineBound());
