@@ -122,6 +122,18 @@ void BM_TableBreak(benchmark::State& state)
   simulateRepeatedly(state, bench::breakShot());
 }
 
+/// How the break's cost grows with the rack: a rack of 2 to 5 rows (3, 6, 10 or 15 balls; the argument), every ball
+/// to rest at the default tolerance.
+void BM_TableBreakRows(benchmark::State& state)
+{
+  const std::vector<bsp::TableBall> balls = bench::breakShot(8.0, static_cast<int>(state.range(0)));
+  bsp::MotionParameters parameters;
+  parameters.impact.max_seconds = 60.0;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(bsp::simulateTable(balls, bsp::BallProperties{}, bsp::Table{}, parameters));
+  state.counters["balls"] = static_cast<double>(balls.size() - 1);
+}
+
 /// The break's first impact alone: the cue ball (sliding at 8 m/s, no spin) and the 15 racked balls, 47 contacts.
 void BM_RackImpact(benchmark::State& state)
 {
@@ -228,6 +240,7 @@ BENCHMARK(BM_TrajectoryThreeCushions)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_TableCutShot)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RackImpact)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TableBreak)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TableBreakRows)->Arg(2)->Arg(3)->Arg(4)->Arg(5)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LoneStrike)->Arg(8)->Arg(12)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FrozenPairStrike)->Arg(8)->Arg(12)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FrozenRackSideStrike)->Arg(8)->Arg(12)->Unit(benchmark::kMicrosecond);
