@@ -35,8 +35,8 @@
 #include <string>
 #include <vector>
 
+#include "../test/fixtures/plan_layouts.hpp"
 #include "billiard_shot_planner/planning/shot_planner.hpp"
-#include "plan_layouts.hpp"
 
 namespace bsp = billiard_shot_planner;
 using namespace plan_layouts;  // NOLINT(google-build-using-namespace): the benchmark is about those layouts

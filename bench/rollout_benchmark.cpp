@@ -1,13 +1,14 @@
 // The cost of one planning rollout: a noisy stroke placed, checked for a clear cue and predicted to rest (the
 // strike, every ball's path, every impact), at the planner's tolerance (relative 1e-8, absolute 1e-10), on the plan
-// benchmark's seeded random layouts (bench/plan_layouts.hpp: 1, 3, 7 and 15 object balls, a quarter each). Each
+// benchmark's seeded random layouts (test/fixtures/plan_layouts.hpp: 1, 3, 7 and 15 object balls, a quarter each). Each
 // layout's shot is the ghost-ball baseline's (the plan benchmark's), so that the rollouts do not depend on a planner's
 // search; each rollout draws its stroke from the planner's default ExecutionNoise with a generator seeded by the
 // layout.
 //
 // Prints one markdown row per group: rollouts, the median, 95th percentile and mean time of one rollout on one
 // thread, and rollouts per second on one thread and on two (the same rollouts split between two threads, each with its
-// own configuration copy, as the planner runs them). Arguments: [layouts = 200] [rollouts per layout = 20].
+// own configuration copy, as the planner runs them). Arguments: [layouts = 200] [rollouts per layout = 20] [relative
+// tolerance = the planner's; the absolute one a hundredth of it, at most 1e-8].
 //
 // Built with -DBILLIARD_SHOT_PLANNER_BENCHMARKS=ON (scripts/bench runs it).
 #include <algorithm>
@@ -20,17 +21,18 @@
 #include <thread>
 #include <vector>
 
+#include "../test/fixtures/plan_layouts.hpp"
 #include "billiard_shot_planner/planning/shot_planner.hpp"
-#include "plan_layouts.hpp"
 
 namespace bsp = billiard_shot_planner;
 using namespace plan_layouts;  // NOLINT(google-build-using-namespace): the benchmark is about those layouts
 
 namespace
 {
-/// The planner's tolerances (src/planning/plan_context.hpp, PLANNING_TOLERANCE).
+/// The planner's tolerance (src/planning/plan_context.hpp, PLANNING_TOLERANCE).
 constexpr double PLANNING_RELATIVE_TOLERANCE = 1e-8;
-constexpr double PLANNING_ABSOLUTE_TOLERANCE = 1e-10;
+
+double relative_tolerance = PLANNING_RELATIVE_TOLERANCE;
 
 using Clock = std::chrono::steady_clock;
 
@@ -45,8 +47,8 @@ struct Rollout
 bsp::ShotConfiguration planningConfiguration()
 {
   bsp::ShotConfiguration configuration = CONFIGURATION;
-  configuration.solver.relative_tolerance = PLANNING_RELATIVE_TOLERANCE;
-  configuration.solver.absolute_tolerance = PLANNING_ABSOLUTE_TOLERANCE;
+  configuration.solver.relative_tolerance = relative_tolerance;
+  configuration.solver.absolute_tolerance = std::min(1e-8, 1e-2 * relative_tolerance);
   return configuration;
 }
 
@@ -94,6 +96,8 @@ int main(int argc, char** argv)
 {
   const int layouts = argc > 1 ? std::max(1, std::atoi(argv[1])) : 200;
   const int per_layout = argc > 2 ? std::max(1, std::atoi(argv[2])) : 20;
+  if (argc > 3)
+    relative_tolerance = std::atof(argv[3]);
 
   std::vector<Layout> tables;
   tables.reserve(static_cast<std::size_t>(layouts));
@@ -120,6 +124,7 @@ int main(int argc, char** argv)
     by_group[rollout.group].push_back(&rollout);
   }
 
+  std::printf("relative tolerance %g\n\n", relative_tolerance);
   std::printf("| group | rollouts | p50 | p95 | mean | rollouts/s, 1 thread | rollouts/s, 2 threads |\n");
   std::printf("|---|---|---|---|---|---|---|\n");
   for (int count : OBJECT_BALL_COUNTS)
