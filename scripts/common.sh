@@ -19,6 +19,7 @@ PACKAGES=(
   libroscpp-dev libactionlib-dev libactionlib-msgs-dev python3-actionlib libtf2-ros-dev libtf2-geometry-msgs-dev libtf2-eigen-dev libvisualization-msgs-dev
   libgeometry-msgs-dev libstd-srvs-dev python3-std-srvs librostest-dev python3-rostest python3-rospy python3-rosbag tf2-tools
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
+  libdiagnostic-updater-dev python3-diagnostic-msgs
   libeigen3-dev libboost-dev nlohmann-json3-dev libyaml-cpp-dev libnlopt-cxx-dev libceres-dev
   libgtest-dev libbenchmark-dev
   rviz xvfb xauth libgl1-mesa-dri imagemagick python3-pil

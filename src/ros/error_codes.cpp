@@ -45,6 +45,37 @@ Error transformError(const std::string& field, const tf2::TransformException& ex
                std::string("no transform to the table frame: ") + exception.what()};
 }
 
+const char* errorCodeName(int32_t val)
+{
+  switch (val)
+  {
+    case ErrorCode::SUCCESS:
+      return "SUCCESS";
+    case ErrorCode::INVALID_ARGUMENT:
+      return "INVALID_ARGUMENT";
+    case ErrorCode::INVALID_SHOT:
+      return "INVALID_SHOT";
+    case ErrorCode::NO_APPROACHING_CONTACT:
+      return "NO_APPROACHING_CONTACT";
+    case ErrorCode::TRANSFORM_FAILED:
+      return "TRANSFORM_FAILED";
+    case ErrorCode::STALE_INPUT:
+      return "STALE_INPUT";
+    case ErrorCode::TIME_LIMIT:
+      return "TIME_LIMIT";
+    case ErrorCode::EVENT_LIMIT:
+      return "EVENT_LIMIT";
+    case ErrorCode::STEP_LIMIT:
+      return "STEP_LIMIT";
+    case ErrorCode::NUMERICAL_FAILURE:
+      return "NUMERICAL_FAILURE";
+    case ErrorCode::NO_SHOT_FOUND:
+      return "NO_SHOT_FOUND";
+    default:
+      return "UNKNOWN";
+  }
+}
+
 ErrorCode errorCodeOf(const Error& error)
 {
   return errorCode(valueOf(error.code));

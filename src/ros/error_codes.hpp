@@ -13,6 +13,9 @@ namespace billiard_shot_planner
 /// The message's code for a core error (msg/ErrorCode.msg).
 ErrorCode errorCodeOf(const Error& error);
 
+/// The constant's name of an ErrorCode value ("TRANSFORM_FAILED"; "UNKNOWN" for a value the message lacks).
+const char* errorCodeName(int32_t val);
+
 /// ErrorCode{val}, e.g. errorCode(ErrorCode::SUCCESS).
 ErrorCode errorCode(int32_t val);
 

@@ -1,8 +1,12 @@
 #include "node_settings.hpp"
+
+#include <ros/param.h>
 #include "parameter_names.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <sstream>
 #include <utility>
 
 #include "billiard_shot_planner/core/validation.hpp"
@@ -11,12 +15,13 @@ namespace billiard_shot_planner
 {
 namespace
 {
-Status readPockets(const ros::NodeHandle& pnh, Table& table)
+Status readPockets(ParameterTree& parameters, Table& table)
 {
   table.pockets = sixPockets(table.length, table.width);
-  XmlRpc::XmlRpcValue list;
-  if (!pnh.getParam("table/pockets", list))
+  const XmlRpc::XmlRpcValue* found = parameters.find("table/pockets");
+  if (!found)
     return {};
+  XmlRpc::XmlRpcValue list = *found;  // XmlRpcValue's conversions are not const
   if (list.getType() != XmlRpc::XmlRpcValue::TypeArray)
     return invalidArgument("table/pockets", "must be a list of [x, y, radius]");
   table.pockets.clear();
@@ -41,45 +46,63 @@ Status readPockets(const ros::NodeHandle& pnh, Table& table)
   return {};
 }
 
-/// A parameter that names one of two choices: `value` becomes `first` or `second`; anything else is refused.
+/// A parameter that names one of two choices, with the two names.
 template <class Choice>
-Status readChoice(const ros::NodeHandle& pnh, const std::string& name, std::pair<const char*, Choice> first,
-                  std::pair<const char*, Choice> second, Choice& value)
+struct TwoChoices
 {
-  std::string chosen = value == first.second ? first.first : second.first;
-  pnh.param(name, chosen, chosen);
-  if (chosen != first.first && chosen != second.first)
-    return invalidArgument(
-        name, std::string("must be \"") + first.first + "\" or \"" + second.first + "\", got \"" + chosen + "\"");
-  value = chosen == first.first ? first.second : second.second;
+  std::pair<const char*, Choice> first, second;
+
+  const char* nameOf(Choice value) const { return value == first.second ? first.first : second.first; }
+};
+const TwoChoices<RollingModel> ROLLING_MODELS{{"paper", RollingModel::Paper}, {"pooltool", RollingModel::Pooltool}};
+const TwoChoices<BallBallFriction> BALL_BALL_FRICTION_MODELS{{"alciatore", BallBallFriction::Alciatore},
+                                                             {"constant", BallBallFriction::Constant}};
+
+/// `value` becomes the choice the parameter `name` names; any other name is refused.
+template <class Choice>
+Status readChoice(ParameterTree& parameters, const std::string& name, const TwoChoices<Choice>& choices, Choice& value)
+{
+  std::string chosen = choices.nameOf(value);
+  if (Status status = parameters.read(name, chosen); !status)
+    return status;
+  if (chosen != choices.first.first && chosen != choices.second.first)
+    return invalidArgument(name, std::string("must be \"") + choices.first.first + "\" or \"" + choices.second.first +
+                                     "\", got \"" + chosen + "\"");
+  value = chosen == choices.first.first ? choices.first.second : choices.second.second;
   return {};
 }
 
-Status readMotionChoices(const ros::NodeHandle& pnh, MotionParameters& motion)
+Status readMotionChoices(ParameterTree& parameters, MotionParameters& motion)
 {
-  pnh.param("motion/planar", motion.planar, motion.planar);
-  return readChoice(pnh, "motion/rolling_model", std::pair{"paper", RollingModel::Paper},
-                    std::pair{"pooltool", RollingModel::Pooltool}, motion.rolling_model);
+  if (Status status = parameters.read("motion/planar", motion.planar); !status)
+    return status;
+  return readChoice(parameters, "motion/rolling_model", ROLLING_MODELS, motion.rolling_model);
 }
 
-Status readBallContactChoices(const ros::NodeHandle& pnh, BallContactSettings& contact)
+Status readBallContactChoices(ParameterTree& parameters, BallContactSettings& contact)
 {
-  return readChoice(pnh, "ball_ball/friction_model", std::pair{"alciatore", BallBallFriction::Alciatore},
-                    std::pair{"constant", BallBallFriction::Constant}, contact.friction_model);
+  return readChoice(parameters, "ball_ball/friction_model", BALL_BALL_FRICTION_MODELS, contact.friction_model);
+}
+
+/// Each contact's surface by its parameter's name.
+std::vector<std::pair<const char*, SurfaceContact*>> contactSurfaces(ShotConfiguration& shot)
+{
+  return {{"cue_contact", &shot.cue_contact},
+          {"table/cloth", &shot.table.cloth},
+          {"table/cushion", &shot.table.cushion},
+          {"ball_ball", &shot.ball_contact.ball_ball}};
 }
 
 /// ~<contact>/law/type ("constant", "elastic_plastic"): each contact's law, at its default parameters; the law's
 /// own parameters (~table/cushion/law/yield_speed) are numeric parameters, read after it.
-Status readContactLaws(const ros::NodeHandle& pnh, ShotConfiguration& shot)
+Status readContactLaws(ParameterTree& parameters, ShotConfiguration& shot)
 {
-  for (auto [contact, surface] :
-       {std::pair{"cue_contact", &shot.cue_contact}, std::pair{"table/cloth", &shot.table.cloth},
-        std::pair{"table/cushion", &shot.table.cushion}, std::pair{"ball_ball", &shot.ball_contact.ball_ball}})
+  for (auto [contact, surface] : contactSurfaces(shot))
   {
     const std::string name = std::string(contact) + "/law";
-    std::string type;
-    if (!pnh.getParam(name + "/type", type))
-      continue;
+    std::string type = lawType(surface->normal_law);
+    if (Status status = parameters.read(name + "/type", type); !status)
+      return status;
     auto law = lawOfType(type, name);
     if (!law)
       return namedAsParameter(Status(law.error()));
@@ -106,38 +129,103 @@ Status checkNodeSettings(const NodeSettings& s)
     return invalidArgument("calibration/max_shots", "must be in [1, 200]");
   return {};
 }
+
+/// The node's own settings, not the physics'.
+Status readNodeSettings(ParameterTree& parameters, NodeSettings& s)
+{
+  int max_shots = static_cast<int>(s.recording.max_shots);
+  Status status =
+      firstError({parameters.read("target_frame", s.target_frame), parameters.read("tf_timeout", s.tf_timeout),
+                  parameters.read("sample_spacing", s.sample_spacing),
+                  parameters.read("table_state_timeout", s.table_state_timeout), parameters.read("threads", s.threads),
+                  parameters.read("calibration/track_duration", s.recording.track_duration),
+                  parameters.read("calibration/max_shots", max_shots)});
+  s.recording.max_shots = static_cast<std::size_t>(std::max(max_shots, 0));
+  return status;
+}
+
+Status readNumericParameters(ParameterTree& parameters, ShotConfiguration& shot)
+{
+  for (const NamedParameter& parameter : numericParameters(shot))
+    if (Status status = parameters.read(parameterName(parameter.name), *parameter.value); !status)
+      return status;
+  return {};
+}
 }  // namespace
 
-Expected<NodeSettings> readSettings(const ros::NodeHandle& pnh)
+Expected<NodeSettings> readSettings(ParameterTree& parameters)
 {
   NodeSettings s;
-  pnh.param("target_frame", s.target_frame, s.target_frame);
-  pnh.param("tf_timeout", s.tf_timeout, s.tf_timeout);
-  pnh.param("sample_spacing", s.sample_spacing, s.sample_spacing);
-  pnh.param("table_state_timeout", s.table_state_timeout, s.table_state_timeout);
-  pnh.param("threads", s.threads, s.threads);
-  pnh.param("calibration/track_duration", s.recording.track_duration, s.recording.track_duration);
-  int max_shots = static_cast<int>(s.recording.max_shots);
-  pnh.param("calibration/max_shots", max_shots, max_shots);
-  s.recording.max_shots = static_cast<std::size_t>(std::max(max_shots, 0));
-  if (Status status = readContactLaws(pnh, s.shot); !status)
+  // In order: what cannot be read, then the node's own settings, then the physics, then what nobody read.
+  if (Status status = firstError({readNodeSettings(parameters, s), readContactLaws(parameters, s.shot)}); !status)
     return status.error();
-  for (const NamedParameter& parameter : numericParameters(s.shot))
-    pnh.param(parameterName(parameter.name), *parameter.value, *parameter.value);
-  // In order: what cannot be read, then the node's own settings, then the physics.
-  if (Status status = readPockets(pnh, s.shot.table); !status)
+  // After the laws: the names of a law's own parameters follow the law each contact has.
+  if (Status status = firstError({readNumericParameters(parameters, s.shot), readPockets(parameters, s.shot.table),
+                                  readMotionChoices(parameters, s.shot.motion),
+                                  readBallContactChoices(parameters, s.shot.ball_contact)});
+      !status)
     return status.error();
-  if (Status status = readMotionChoices(pnh, s.shot.motion); !status)
-    return status.error();
-  if (Status status = readBallContactChoices(pnh, s.shot.ball_contact); !status)
-    return status.error();
+  auto planning = readPlanningSettings(parameters);
   if (Status status = firstError({checkNodeSettings(s), namedAsParameter(validate(s.shot))}); !status)
     return status.error();
-  auto planning = readPlanningSettings(pnh);
   if (!planning)
     return planning.error();
   s.planning = planning.value();
+  // Aside: ~tuning/ (dynamic_reconfigure's record of the tuned values) and ~diagnostic_period (diagnostic_updater's).
+  if (Status status = parameters.checkEveryParameterWasRead({"tuning", "diagnostic_period"}); !status)
+    return status.error();
   return s;
+}
+
+SettingsDescription describeSettings(NodeSettings s)
+{
+  SettingsDescription d;
+  auto number = [&d](const std::string& name, double value)
+  {
+    d.names.push_back(name);
+    d.values.push_back(value);
+  };
+  auto choice = [&d](const std::string& name, const std::string& value)
+  {
+    d.choice_names.push_back(name);
+    d.choice_values.push_back(value);
+  };
+  number("tf_timeout", s.tf_timeout);
+  number("sample_spacing", s.sample_spacing);
+  number("table_state_timeout", s.table_state_timeout);
+  number("threads", s.threads);
+  number("calibration/track_duration", s.recording.track_duration);
+  number("calibration/max_shots", static_cast<double>(s.recording.max_shots));
+  for (const NamedParameter& parameter : numericParameters(s.shot))
+    number(parameterName(parameter.name), *parameter.value);
+  for (const PlanningParameter& parameter : planningParameters(s.planning))
+    number(parameter.name, *parameter.value);
+  number("planning/rollouts", s.planning.rollouts);
+  number("planning/threads", s.planning.threads);
+  choice("target_frame", s.target_frame);
+  choice("motion/planar", s.shot.motion.planar ? "true" : "false");
+  choice("motion/rolling_model", ROLLING_MODELS.nameOf(s.shot.motion.rolling_model));
+  choice("ball_ball/friction_model", BALL_BALL_FRICTION_MODELS.nameOf(s.shot.ball_contact.friction_model));
+  for (auto [contact, surface] : contactSurfaces(s.shot))
+    choice(std::string(contact) + "/law/type", lawType(surface->normal_law));
+  std::ostringstream pockets;
+  pockets.precision(std::numeric_limits<double>::max_digits10);  // reads back to the same doubles
+  pockets << "[";
+  for (std::size_t i = 0; i < s.shot.table.pockets.size(); ++i)
+  {
+    const Pocket& pocket = s.shot.table.pockets[i];
+    pockets << (i ? ", [" : "[") << pocket.centre.x() << ", " << pocket.centre.y() << ", " << pocket.radius << "]";
+  }
+  choice("table/pockets", pockets.str() + "]");
+  return d;
+}
+
+Expected<NodeSettings> readSettings(const ros::NodeHandle& private_handle)
+{
+  XmlRpc::XmlRpcValue tree;
+  ros::param::get(private_handle.getNamespace(), tree);  // absent: no parameters, every default
+  ParameterTree parameters(tree);
+  return readSettings(parameters);
 }
 
 }  // namespace billiard_shot_planner

@@ -3,10 +3,12 @@
 #include <ros/node_handle.h>
 
 #include <string>
+#include <vector>
 
 #include "billiard_shot_planner/calibration/shot_recorder.hpp"
 #include "billiard_shot_planner/core/expected.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
+#include "parameter_tree.hpp"
 #include "planning_settings.hpp"
 
 namespace billiard_shot_planner
@@ -25,7 +27,23 @@ struct NodeSettings
   RecorderLimits recording;  ///< ~calibration/track_duration, ~calibration/max_shots
 };
 
-/// Reads every parameter (absent ones keep their defaults) and validates them. The error names the parameter.
+/// Reads every parameter (absent ones keep their defaults) and validates them. The error names the parameter: one of
+/// the wrong type, a value out of its range, or a parameter under the node's namespace that the node does not have
+/// (~tuning/, dynamic_reconfigure's own, aside).
+Expected<NodeSettings> readSettings(ParameterTree& parameters);
+/// The settings by the parameters' names, as ~get_configuration answers them: the numbers (SI units; integers as
+/// whole numbers) and the parameters that name a choice (a frame, a model, a law, true/false, the pockets' list).
+/// Each name reads back through readSettings() to the same settings.
+struct SettingsDescription
+{
+  std::vector<std::string> names;
+  std::vector<double> values;
+  std::vector<std::string> choice_names;
+  std::vector<std::string> choice_values;
+};
+SettingsDescription describeSettings(NodeSettings settings);
+
+/// readSettings() of the node's private namespace on the parameter server.
 Expected<NodeSettings> readSettings(const ros::NodeHandle& private_handle);
 
 }  // namespace billiard_shot_planner

@@ -62,14 +62,15 @@ std::vector<PlanningParameter> planningParameters(PlanningSettings& s)
           {"planning/budget", &s.budget}};
 }
 
-Expected<PlanningSettings> readPlanningSettings(const ros::NodeHandle& pnh)
+Expected<PlanningSettings> readPlanningSettings(ParameterTree& parameters)
 {
   PlanningSettings s;
   for (const PlanningParameter& parameter : planningParameters(s))
-    pnh.param(parameter.name, *parameter.value, *parameter.value);
-  pnh.param("planning/rollouts", s.rollouts, s.rollouts);
-  pnh.param("planning/threads", s.threads, s.threads);
-  if (Status status = check(s); !status)
+    if (Status status = parameters.read(parameter.name, *parameter.value); !status)
+      return status.error();
+  if (Status status = firstError(
+          {parameters.read("planning/rollouts", s.rollouts), parameters.read("planning/threads", s.threads), check(s)});
+      !status)
     return status.error();
   return s;
 }

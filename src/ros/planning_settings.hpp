@@ -1,11 +1,10 @@
 #pragma once
 
-#include <ros/ros.h>
-
 #include <string>
 #include <vector>
 
 #include "billiard_shot_planner/planning/shot_planner.hpp"
+#include "parameter_tree.hpp"
 
 namespace billiard_shot_planner
 {
@@ -28,7 +27,7 @@ struct PlanningParameter
 std::vector<PlanningParameter> planningParameters(PlanningSettings& settings);
 
 /// Reads ~planning/... (absent ones keep their defaults) and checks them; the error names the parameter.
-Expected<PlanningSettings> readPlanningSettings(const ros::NodeHandle& private_handle);
+Expected<PlanningSettings> readPlanningSettings(ParameterTree& parameters);
 
 /// Sets one parameter by its name ("planning/rollouts" too): whether the name is a planning parameter, and the
 /// error when it is but the value is refused.

@@ -100,6 +100,16 @@ PlanShotResult ShotPlannerServer::plan(const PlanShotGoal& goal, const PlanHooks
   return toResult(plan.value(), frame_, sample_spacing_, ros::Time::now());
 }
 
+PlanShotResult ShotPlannerServer::planRecorded(const std::string& call, const PlanShotGoal& goal,
+                                               const PlanHooks& hooks)
+{
+  const ros::WallTime start = ros::WallTime::now();
+  PlanShotResult result = plan(goal, hooks);
+  if (access_.record)
+    access_.record(call, (ros::WallTime::now() - start).toSec(), result.error_code, result.message);
+  return result;
+}
+
 void ShotPlannerServer::publishMarkers(const ShotPlan& plan, const ShotConfiguration& configuration)
 {
   if (plan.outcome.table.balls.empty())
@@ -121,7 +131,7 @@ void ShotPlannerServer::execute(const PlanShotGoalConstPtr& goal)
     action_server_.publishFeedback(feedback);
   };
   hooks.stop = [this]() { return action_server_.isPreemptRequested() || !ros::ok(); };
-  const PlanShotResult result = plan(*goal, hooks);
+  const PlanShotResult result = planRecorded("plan_shot", *goal, hooks);
   // A valid goal that was stopped ends preempted with the best so far, whether or not it pots.
   const bool planned = result.success || result.error_code.val == ErrorCode::NO_SHOT_FOUND;
   if (planned && action_server_.isPreemptRequested())
@@ -137,7 +147,7 @@ void ShotPlannerServer::execute(const PlanShotGoalConstPtr& goal)
 
 bool ShotPlannerServer::planNow(PlanShotNow::Request& request, PlanShotNow::Response& response)
 {
-  response.result = plan(request.goal, PlanHooks{});
+  response.result = planRecorded("plan_shot_now", request.goal, PlanHooks{});
   if (!response.result.success)
     ROS_WARN("plan_shot_now: %s", response.result.message.c_str());
   return true;  // a goal that cannot be planned is an answer, not a failed call

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <actionlib/server/simple_action_server.h>
+#include <billiard_shot_planner/ErrorCode.h>
 #include <billiard_shot_planner/PlanShotAction.h>
 #include <billiard_shot_planner/PlanShotNow.h>
 #include <billiard_shot_planner/TableState.h>
@@ -36,6 +37,8 @@ public:
     std::function<Expected<std::vector<TableBall>>(const TableState&)> place_table;
     /// A point in the table frame.
     std::function<Expected<Eigen::Vector2d>(const geometry_msgs::PointStamped&, const std::string&)> place_point;
+    /// A call answered ("plan_shot", its wall-clock seconds, its code and message), for the node's health.
+    std::function<void(const std::string&, double, const ErrorCode&, const std::string&)> record;
   };
 
   ShotPlannerServer(ros::NodeHandle& private_node, NodeAccess access, std::string frame, double sample_spacing,
@@ -46,6 +49,8 @@ private:
   bool planNow(PlanShotNow::Request& request, PlanShotNow::Response& response);
   /// The result of a goal (success false with the reason when it cannot be planned).
   PlanShotResult plan(const PlanShotGoal& goal, const PlanHooks& hooks);
+  /// plan(), timed and recorded as `call`.
+  PlanShotResult planRecorded(const std::string& call, const PlanShotGoal& goal, const PlanHooks& hooks);
   Expected<PlanRequest> planRequest(const PlanShotGoal& goal, PlanningSettings& settings,
                                     ShotConfiguration& configuration) const;
   void publishMarkers(const ShotPlan& plan, const ShotConfiguration& configuration);

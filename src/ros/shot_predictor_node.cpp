@@ -79,13 +79,23 @@ Status checkRequest(const PredictShot::Request& r, bool cue_ball_in_table)
 }
 }  // namespace
 
-ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
+namespace
 {
-  (void)node;
+NodeSettings readOrThrow(const ros::NodeHandle& private_node)
+{
   auto settings = readSettings(private_node);
   if (!settings)
     throw std::runtime_error("invalid parameter ~" + settings.error().describe());
-  settings_ = settings.value();
+  return settings.value();
+}
+}  // namespace
+
+ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
+    : settings_(readOrThrow(private_node)), health_(settings_.table_state_timeout), diagnostics_(node, private_node)
+{
+  diagnostics_.setHardwareID("none");  // software only: the robot's devices report their own
+  diagnostics_.add("health", [this](diagnostic_updater::DiagnosticStatusWrapper& status)
+                   { health_.report(status, ros::Time::now()); });
   // Latched: a display or a logger that connects later still gets the last prediction.
   prediction_publisher_ = private_node.advertise<ShotPrediction>("prediction", 10, true);
   marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("trajectory_markers", 1, true);
@@ -97,8 +107,15 @@ ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& pri
   calibration_ = std::make_unique<ShotCalibrationServer>(private_node, calibrationAccess(), settings_.recording,
                                                          settings_.threads);
   // A queue, not just the latest: every sighting counts for calibration.
-  table_subscriber_ = private_node.subscribe("table_state", 100, &ShotPredictorNode::storeTable, this);
+  ros::SubscribeOptions table_options = ros::SubscribeOptions::create<TableState>(
+      "table_state", 100, [this](const TableState::ConstPtr& table) { storeTable(table); }, ros::VoidPtr(),
+      &table_queue_);
+  table_subscriber_ = private_node.subscribe(table_options);
+  table_spinner_.start();
   service_ = private_node.advertiseService("predict_shot", &ShotPredictorNode::predict, this);
+  configuration_service_ =
+      private_node.advertiseService("get_configuration", &ShotPredictorNode::describeConfiguration, this);
+  diagnostics_timer_ = node.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { diagnostics_.update(); });
   planner_ = std::make_unique<ShotPlannerServer>(private_node, plannerAccess(), settings_.target_frame,
                                                  settings_.sample_spacing, marker_publisher_);
   ROS_INFO("predict_shot ready: answers in frame '%s'", settings_.target_frame.c_str());
@@ -180,6 +197,8 @@ ShotPlannerServer::NodeAccess ShotPredictorNode::plannerAccess()
   };
   access.place_point = [this](const geometry_msgs::PointStamped& point, const std::string& field)
   { return placePoint(point, field); };
+  access.record = [this](const std::string& call, double seconds, const ErrorCode& code, const std::string& message)
+  { health_.recordCall(call, seconds, code.val, message, ros::Time::now()); };
   return access;
 }
 
@@ -208,6 +227,7 @@ ShotCalibrationServer::NodeAccess ShotPredictorNode::calibrationAccess()
 
 void ShotPredictorNode::storeTable(const TableState::ConstPtr& table)
 {
+  health_.recordTableState(ros::Time::now());
   {
     std::lock_guard<std::mutex> lock(table_mutex_);
     latest_table_ = *table;
@@ -284,6 +304,34 @@ Expected<CuePlacement> ShotPredictorNode::placeCue(const PredictShot::Request& r
 }
 
 bool ShotPredictorNode::predict(PredictShot::Request& request, PredictShot::Response& response)
+{
+  const ros::WallTime start = ros::WallTime::now();
+  answer(request, response);
+  health_.recordCall("predict_shot", (ros::WallTime::now() - start).toSec(), response.error_code.val, response.message,
+                     ros::Time::now());
+  return true;  // a domain error is an answer, not a failed call
+}
+
+bool ShotPredictorNode::describeConfiguration(GetConfiguration::Request& /*request*/,
+                                              GetConfiguration::Response& response)
+{
+  NodeSettings settings;
+  {
+    std::lock_guard<std::mutex> lock(configuration_mutex_);
+    settings = settings_;
+  }
+  const SettingsDescription description = describeSettings(settings);
+  response.names = description.names;
+  response.values = description.values;
+  response.choice_names = description.choice_names;
+  response.choice_values = description.choice_values;
+  response.success = true;
+  response.message = "ok";
+  response.error_code = errorCode(ErrorCode::SUCCESS);
+  return true;
+}
+
+bool ShotPredictorNode::answer(PredictShot::Request& request, PredictShot::Response& response)
 {
   auto fail = [&](const Error& error)
   {

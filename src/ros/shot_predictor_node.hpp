@@ -1,9 +1,12 @@
 #pragma once
 
+#include <billiard_shot_planner/GetConfiguration.h>
 #include <billiard_shot_planner/PredictShot.h>
 #include <billiard_shot_planner/ShotPredictorConfig.h>
 #include <billiard_shot_planner/TableState.h>
+#include <diagnostic_updater/diagnostic_updater.h>
 #include <dynamic_reconfigure/server.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
@@ -12,6 +15,7 @@
 #include <memory>
 #include <mutex>
 
+#include "node_health.hpp"
 #include "node_settings.hpp"
 #include "shot_calibration_server.hpp"
 #include "shot_planner_server.hpp"
@@ -20,7 +24,8 @@ namespace billiard_shot_planner
 {
 /// The ROS face of the core library: ~predict_shot in, ~prediction and ~trajectory_markers out; the planner's
 /// ~plan_shot and ~plan_shot_now (ShotPlannerServer) and calibration's ~record_shot, ~fit_calibration and
-/// ~clear_shots (ShotCalibrationServer) share its table, tf buffer and configuration. A thin adapter:
+/// ~clear_shots (ShotCalibrationServer) share its table, tf buffer and configuration; ~get_configuration answers
+/// the configuration in force, and /diagnostics reports the node's health (NodeHealth). A thin adapter:
 /// messages and tf2 in, predictShot(), messages and markers out. The core is pure and thread-safe, so the service
 /// may be served by several threads at once; the physical parameters can be tuned at run time (~tuning, through
 /// dynamic_reconfigure), each request using a consistent snapshot of them.
@@ -33,7 +38,10 @@ public:
   int threads() const { return settings_.threads; }
 
 private:
+  /// answer(), timed and recorded for /diagnostics.
   bool predict(PredictShot::Request& request, PredictShot::Response& response);
+  bool answer(PredictShot::Request& request, PredictShot::Response& response);
+  bool describeConfiguration(GetConfiguration::Request& request, GetConfiguration::Response& response);
   /// The cue's pose and the cue ball's position in the table frame; the cue ball's position is left for the table
   /// to give when it holds the cue ball.
   Expected<CuePlacement> placeCue(const PredictShot::Request& request, bool cue_ball_in_table) const;
@@ -58,6 +66,9 @@ private:
   void retune(ShotPredictorConfig& tuning, uint32_t level);
 
   NodeSettings settings_;
+  NodeHealth health_;
+  diagnostic_updater::Updater diagnostics_;
+  ros::Timer diagnostics_timer_;
   mutable std::mutex configuration_mutex_;  ///< guards settings_.shot against run-time tuning
   /// The tuning server's own lock, shared with it so that updateConfig() may be called without deadlock.
   boost::recursive_mutex tuning_mutex_;
@@ -67,6 +78,10 @@ private:
   ros::Publisher prediction_publisher_;
   ros::Publisher marker_publisher_;
   ros::ServiceServer service_;
+  ros::ServiceServer configuration_service_;
+  /// ~table_state has a queue and a thread of its own, so that no long call (a plan, a fit) holds up its intake.
+  ros::CallbackQueue table_queue_;
+  ros::AsyncSpinner table_spinner_{1, &table_queue_};
   ros::Subscriber table_subscriber_;
   mutable std::mutex table_mutex_;  ///< guards latest_table_ against the subscriber's callback
   TableState latest_table_;

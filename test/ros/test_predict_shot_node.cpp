@@ -1,9 +1,11 @@
 // The shot_predictor node end to end (rostest): answers equal the core library's, frames do not matter, bad
 // input is answered with success = false and a reason, markers are latched arrays that replace each other, and
 // concurrent callers are all served.
+#include <billiard_shot_planner/GetConfiguration.h>
 #include <billiard_shot_planner/PredictShot.h>
 #include <billiard_shot_planner/ShotPrediction.h>
 #include <billiard_shot_planner/TableState.h>
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <gtest/gtest.h>
 
@@ -13,6 +15,7 @@
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 #include <limits>
+#include <map>
 #include <optional>
 
 #include <Eigen/Geometry>
@@ -40,6 +43,38 @@ bsp::PredictShot::Response call(const bsp::PredictShot::Request& request)
   srv.request = request;
   EXPECT_TRUE(ros::service::call(SERVICE, srv));
   return srv.response;
+}
+
+/// The first status named `name` on /diagnostics within 10 s that has `level` (any when absent) and the key
+/// `key` (any when empty).
+std::optional<diagnostic_msgs::DiagnosticStatus> waitForStatus(const std::string& name, std::optional<int8_t> level,
+                                                               const std::string& key = "")
+{
+  ros::NodeHandle node;
+  std::mutex mutex;
+  std::optional<diagnostic_msgs::DiagnosticStatus> found;
+  ros::Subscriber subscriber = node.subscribe<diagnostic_msgs::DiagnosticArray>(
+      "/diagnostics", 10,
+      [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& array)
+      {
+        for (const auto& status : array->status)
+        {
+          const bool has_key = key.empty() || std::any_of(status.values.begin(), status.values.end(),
+                                                          [&](const auto& pair) { return pair.key == key; });
+          std::lock_guard<std::mutex> lock(mutex);
+          if (status.name == name && (!level || status.level == *level) && has_key)
+            found = status;
+        }
+      });
+  for (int attempt = 0; attempt < 200; ++attempt)
+  {
+    ros::Duration(0.05).sleep();
+    ros::spinOnce();
+    std::lock_guard<std::mutex> lock(mutex);
+    if (found)
+      break;
+  }
+  return found;
 }
 
 class PredictShotNode : public testing::Test
@@ -561,6 +596,49 @@ TEST_F(PredictShotNode, AStaleTableStateIsRefusedWithItsCode)
   EXPECT_EQ(stale.error_code.val, bsp::ErrorCode::STALE_INPUT) << stale.message;
   EXPECT_NE(stale.message.find("table"), std::string::npos) << stale.message;
   EXPECT_TRUE(callStale(with_table).success);
+  // /diagnostics says so: the node's status warns of the stale table state.
+  const auto status = waitForStatus("stale_predictor: health", diagnostic_msgs::DiagnosticStatus::WARN);
+  ASSERT_TRUE(status.has_value());
+  EXPECT_NE(status->message.find("table_state"), std::string::npos) << status->message;
+}
+
+TEST_F(PredictShotNode, DiagnosticsReportTheNodesCallsAndTableStateUnderItsName)
+{
+  const auto response = call(toRequest(shot_fixtures::follow()));
+  ASSERT_TRUE(response.success) << response.message;
+  const auto status = waitForStatus("shot_predictor: health", std::nullopt, "predict_shot calls");
+  ASSERT_TRUE(status.has_value());
+  EXPECT_EQ(status->hardware_id, "none");
+  std::map<std::string, std::string> values;
+  for (const auto& pair : status->values)
+    values[pair.key] = pair.value;
+  EXPECT_GE(std::stol(values["predict_shot calls"]), 1);
+  EXPECT_GT(std::stod(values["predict_shot latency median (ms)"]), 0.0);
+  EXPECT_GE(std::stod(values["predict_shot latency max (ms)"]), std::stod(values["predict_shot latency median (ms)"]));
+  EXPECT_TRUE(values.count("table_state age (s)"));
+}
+
+// ~get_configuration answers the parameters in force by their names: default.yaml's, with predict_shot.test's
+// threads = 4.
+TEST_F(PredictShotNode, GetConfigurationAnswersTheParametersInForce)
+{
+  bsp::GetConfiguration srv;
+  ASSERT_TRUE(ros::service::call("/shot_predictor/get_configuration", srv));
+  ASSERT_TRUE(srv.response.success) << srv.response.message;
+  ASSERT_EQ(srv.response.names.size(), srv.response.values.size());
+  std::map<std::string, double> numbers;
+  for (std::size_t i = 0; i < srv.response.names.size(); ++i)
+    numbers[srv.response.names[i]] = srv.response.values[i];
+  EXPECT_EQ(numbers.at("threads"), 4.0);
+  EXPECT_EQ(numbers.at("ball_radius"), 0.0286);
+  EXPECT_EQ(numbers.at("table/cloth/friction"), 0.152479);
+  EXPECT_EQ(numbers.at("planning/rollouts"), 200.0);
+  std::map<std::string, std::string> choices;
+  for (std::size_t i = 0; i < srv.response.choice_names.size(); ++i)
+    choices[srv.response.choice_names[i]] = srv.response.choice_values[i];
+  EXPECT_EQ(choices.at("target_frame"), "table");
+  EXPECT_EQ(choices.at("motion/rolling_model"), "paper");
+  EXPECT_EQ(choices.at("table/cushion/law/type"), "constant");
 }
 
 // The prediction is stamped with the strike's time, the cue pose's stamp (a pose in the table frame needs no tf at
