@@ -44,7 +44,7 @@ std::vector<std::string> splitName(const std::string& name)
 }
 }  // namespace
 
-ParameterTree::ParameterTree(XmlRpc::XmlRpcValue parameters) : root_(std::move(parameters))
+ParameterTree::ParameterTree(const XmlRpc::XmlRpcValue& parameters) : root_(parameters)
 {
   if (root_.getType() != XmlRpc::XmlRpcValue::TypeStruct)
     root_ = XmlRpc::XmlRpcValue();
@@ -125,7 +125,9 @@ Status ParameterTree::checkRead(const XmlRpc::XmlRpcValue& subtree, const std::s
   if (!path.empty() && (read_.count(path) || std::count(ignored.begin(), ignored.end(), path)))
     return {};
   if (subtree.getType() != XmlRpc::XmlRpcValue::TypeStruct)
-    return invalidArgument(path, "is not a parameter of this node (misspelt, or of another law or version?)");
+    return path.empty()
+               ? Status{}  // no parameters at all
+               : invalidArgument(path, "is not a parameter of this node (misspelt, or of another law or version?)");
   for (auto member = subtree.begin(); member != subtree.end(); ++member)
     if (Status status = checkRead(member->second, path.empty() ? member->first : path + "/" + member->first, ignored);
         !status)

@@ -17,7 +17,7 @@ class ParameterTree
 {
 public:
   /// `parameters`: the private namespace as the parameter server returns it (a struct; anything else is empty).
-  explicit ParameterTree(XmlRpc::XmlRpcValue parameters);
+  explicit ParameterTree(const XmlRpc::XmlRpcValue& parameters);
 
   /// Each leaves `value` as it is when the parameter is absent. A double takes an integer too; an int, a bool and
   /// a string take only their own type.

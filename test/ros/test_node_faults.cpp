@@ -268,3 +268,18 @@ int main(int argc, char** argv)
   spinner.start();
   return RUN_ALL_TESTS();
 }
+
+// A node started without a single parameter (rosrun's way) takes every default and answers.
+TEST_F(NodeFaults, ANodeWithoutParametersAnswersWithTheDefaults)
+{
+  const std::string service = "/bare_predictor/predict_shot";
+  ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(30)));
+  bsp::PredictShot bare, loaded;
+  bare.request = shot_fixtures::toRequest(shot_fixtures::follow());
+  loaded.request = bare.request;
+  ASSERT_TRUE(ros::service::call(service, bare));
+  ASSERT_TRUE(ros::service::call(SERVICE, loaded));
+  ASSERT_TRUE(bare.response.success) << bare.response.message;
+  EXPECT_EQ(bare.response.ball_velocity.x, loaded.response.ball_velocity.x);  // config/default.yaml holds the defaults
+  EXPECT_EQ(bare.response.ball_angular_velocity.y, loaded.response.ball_angular_velocity.y);
+}
