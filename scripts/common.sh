@@ -12,29 +12,37 @@ BUILD_DIR="${BUILD_DIR:-${REPO_ROOT}/build}"
 # per build directory.
 INSTALL_PREFIX="${INSTALL_PREFIX:-${TMPDIR:-/tmp}/billiard_shot_planner-install-$(printf '%s' "$BUILD_DIR" | md5sum | cut -c1-8)}"
 
-# Every Debian package the build, tests, demo, benchmarks and fuzzing use (there is no rosdep on these machines).
-PACKAGES=(
+# The Debian packages there is no rosdep for on these machines: what the build and the demo need, then what the
+# tests, benchmarks, fuzzing and checks need besides (docs/development.md lists each with its use).
+DEMO_PACKAGES=(
   build-essential cmake
   catkin ros-core-dev python3-catkin-pkg rosbash
-  libroscpp-dev libactionlib-dev libactionlib-msgs-dev python3-actionlib libtf2-ros-dev libtf2-geometry-msgs-dev libtf2-eigen-dev libvisualization-msgs-dev
-  libgeometry-msgs-dev libstd-srvs-dev python3-std-srvs librostest-dev python3-rostest python3-rospy python3-rosbag tf2-tools
+  libroscpp-dev libactionlib-dev libactionlib-msgs-dev python3-actionlib libtf2-ros-dev libmessage-filters-dev libtf2-geometry-msgs-dev libtf2-eigen-dev libvisualization-msgs-dev
+  libgeometry-msgs-dev libstd-srvs-dev python3-std-srvs python3-rospy tf2-tools
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
   libdiagnostic-updater-dev python3-diagnostic-msgs
   libeigen3-dev libboost-dev nlohmann-json3-dev libyaml-cpp-dev libnlopt-cxx-dev libceres-dev
-  libgtest-dev libbenchmark-dev
-  rviz xvfb xauth libgl1-mesa-dri imagemagick python3-pil
+  rviz xvfb xauth libgl1-mesa-dri imagemagick
+)
+TEST_PACKAGES=(
+  librostest-dev python3-rostest python3-rosbag python3-tf2-ros
+  libgtest-dev libbenchmark-dev python3-pil
   clang-format clang-tidy catkin-lint
   clang libclang-rt-14-dev
 )
+PACKAGES=("${DEMO_PACKAGES[@]}" "${TEST_PACKAGES[@]}")
 
 # Each heading says how long the whole run (scripts/test and the scripts it calls) has taken so far.
 BSP_STARTED="${BSP_STARTED:-$(date +%s)}"
 export BSP_STARTED
 log() { printf '\n\033[1m== %s\033[0m (%d s)\n' "$*" "$(($(date +%s) - BSP_STARTED))"; }
 
+# install_packages [package...]: those missing of the given ones (default: every package).
 install_packages() {
+  local wanted=("$@")
+  ((${#wanted[@]} > 0)) || wanted=("${PACKAGES[@]}")
   local missing=()
-  for pkg in "${PACKAGES[@]}"; do
+  for pkg in "${wanted[@]}"; do
     dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
   done
   if ((${#missing[@]} == 0)); then
@@ -54,8 +62,9 @@ configure_and_build() {
   # catkin's cached test environment puts the devel space's Python path on PYTHONPATH only if it exists at
   # configure time; on a fresh clone the generated message modules land there after the first build.
   mkdir -p "${BUILD_DIR}/devel/lib/python3/dist-packages"
+  # Tests on unless a caller (the demo) turns them off: the setting persists in the build directory's cache.
   cmake -S "$REPO_ROOT" -B "$BUILD_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_INSTALL_PREFIX="$INSTALL_PREFIX" "$@" >/dev/null
+    -DCMAKE_INSTALL_PREFIX="$INSTALL_PREFIX" -DCATKIN_ENABLE_TESTING=ON "$@" >/dev/null
   log "Building"
   make -C "$BUILD_DIR" -j"$(nproc)" --no-print-directory
 }

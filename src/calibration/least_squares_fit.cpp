@@ -66,12 +66,38 @@ struct Model
   const std::vector<ResidualBlock>& blocks;
   int residual_count;
   const FitOptions& options;
+  std::chrono::steady_clock::time_point began;
   std::chrono::steady_clock::time_point deadline;
+  FitProgress* progress;  ///< where the fit is, reported through options.progress
 
+  bool stopRequested() const { return options.stop && options.stop(); }
+  /// None once the budget is spent or a stop is asked for: every place that checks the budget checks both.
   double secondsLeft() const
   {
+    if (stopRequested())
+      return 0.0;
     return std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
   }
+  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count(); }
+};
+
+/// Reports each iteration of a local fit and ends it, keeping its best point, when a stop is asked for.
+class ReportAndStop : public ceres::IterationCallback
+{
+public:
+  explicit ReportAndStop(const Model& model) : model_(model) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override
+  {
+    model_.progress->iterations = summary.iteration;
+    model_.progress->cost = summary.cost;
+    model_.progress->seconds = model_.seconds();
+    if (model_.options.progress)
+      model_.options.progress(*model_.progress);
+    return model_.stopRequested() ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
+  }
+
+private:
+  const Model& model_;
 };
 
 /// Each block as a residual block of its own on the one parameter block `values` (so that Ceres may evaluate them
@@ -171,6 +197,8 @@ ceres::Solver::Summary fitFree(const Model& model, const std::vector<FitParamete
   // The residuals come from integrations at a relative tolerance near 1e-8: a tighter stop would chase their noise.
   solver.function_tolerance = 1e-8;
   solver.parameter_tolerance = 1e-8;
+  ReportAndStop report_and_stop(model);
+  solver.callbacks.push_back(&report_and_stop);
   ceres::Solver::Summary summary;
   ceres::Solve(solver, &problem, &summary);
   return summary;
@@ -356,8 +384,12 @@ void localFits(const Model& model, const std::vector<FitParameter>& parameters,
       continue;
     tried.push_back(point);
     ++fits;
+    ++model.progress->local_fits;
     if (fitFrom(model, parameters, point, candidate) && (!best || candidate.cost() < best->cost()))
+    {
       best = candidate;
+      model.progress->best_cost = best->cost();
+    }
   }
 }
 
@@ -381,9 +413,15 @@ Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
   }
   if (Status status = validate(parameters, residual_count, options); !status)
     return status.error();
-  const Model model{blocks, residual_count, options,
-                    std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                           std::chrono::duration<double>(options.max_seconds))};
+  const auto now = std::chrono::steady_clock::now();
+  FitProgress progress;
+  const Model model{blocks,
+                    residual_count,
+                    options,
+                    now,
+                    now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(options.max_seconds)),
+                    &progress};
   std::vector<double> start(parameters.size());
   std::transform(parameters.begin(), parameters.end(), start.begin(), [](const FitParameter& p) { return p.start; });
   Eigen::VectorXd r;
@@ -401,6 +439,7 @@ Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
     localFits(model, parameters, rankedStarts(model, parameters, r.squaredNorm(), ESCALATED_STARTS), tried, best);
   if (!best)
     return Error{ErrorKind::NumericalFailure, "parameters", "the model cannot be evaluated along the fit"};
+  const bool stopped = model.stopRequested();
   const bool out_of_time = model.secondsLeft() <= 0.0;
   const std::vector<std::string> jumped = smoothSideCurvature(model, parameters, *best);
   FitResult result = report(parameters, *best);
@@ -411,7 +450,8 @@ Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
   if (out_of_time)
   {
     result.converged = false;
-    result.message = "the wall-clock budget ran out; the best point so far. " + result.message;
+    result.message = std::string(stopped ? "stopped on request" : "the wall-clock budget ran out") +
+                     "; the best point so far. " + result.message;
   }
   return result;
 }

@@ -105,12 +105,16 @@ void ShotRecorder::addPoints(std::size_t shot, const TableSighting& sighting)
     if (!takesPart(observed, id))
       continue;  // a ball that was not on the table at the strike: the fit has nothing to predict it from
     std::vector<TrackPoint>& track = observed.tracks[id];
-    if (points_ >= limits_.max_points || !position.allFinite() || (!track.empty() && t <= track.back().t))
+    // In time order: a sighting may come late (a transform that came late, a slow network); one at a time the
+    // track already has is a repeat.
+    const auto place = std::lower_bound(track.begin(), track.end(), t,
+                                        [](const TrackPoint& point, double time) { return point.t < time; });
+    if (points_ >= limits_.max_points || !position.allFinite() || (place != track.end() && place->t == t))
     {
       ++dropped_points_;
       continue;
     }
-    track.push_back({t, position});
+    track.insert(place, {t, position});
     ++points_;
   }
 }

@@ -25,6 +25,8 @@ const char* toString(ErrorKind code)
       return "unavailable";
     case ErrorKind::Stale:
       return "stale";
+    case ErrorKind::BallsMoving:
+      return "balls_moving";
   }
   return "unknown";
 }

@@ -52,7 +52,8 @@ Status checkBalls(const PlanRequest& r, const ShotConfiguration& c)
         !status)
       return status;
     if (ball.state.velocity.norm() > 0.0 || ball.state.angular_velocity.norm() > 0.0)
-      return invalidArgument("balls", "the balls of a plan are at rest (ball \"" + ball.id + "\" moves)");
+      return Error{ErrorKind::BallsMoving, "balls",
+                   "the balls of a plan are at rest (ball \"" + ball.id + "\" moves): wait until they stop"};
   }
   if (auto run = simulateTable(at_rest, {c.ball_mass, c.ball_radius}, c.table, c.motion, c.ball_contact); !run)
     return run.error();

@@ -26,6 +26,8 @@ int32_t valueOf(ErrorKind kind)
       return ErrorCode::TRANSFORM_FAILED;
     case ErrorKind::Stale:
       return ErrorCode::STALE_INPUT;
+    case ErrorKind::BallsMoving:
+      return ErrorCode::BALLS_MOVING;
   }
   return ErrorCode::INVALID_ARGUMENT;
 }
@@ -61,6 +63,8 @@ const char* errorCodeName(int32_t val)
       return "TRANSFORM_FAILED";
     case ErrorCode::STALE_INPUT:
       return "STALE_INPUT";
+    case ErrorCode::BALLS_MOVING:
+      return "BALLS_MOVING";
     case ErrorCode::TIME_LIMIT:
       return "TIME_LIMIT";
     case ErrorCode::EVENT_LIMIT:

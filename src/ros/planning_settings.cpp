@@ -1,5 +1,6 @@
 #include "planning_settings.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "billiard_shot_planner/core/validation.hpp"
@@ -30,6 +31,7 @@ Status check(const PlanningSettings& s)
 {
   return firstError({asParameter(validate(s.limits)), asParameter(validate(s.noise)),
                      requireWithin(s.budget, 1e-3, 60.0, "planning/budget", "seconds"),
+                     requireWithin(s.rest_speed, 0.0, 1.0, "planning/rest_speed", "m/s"),
                      requireWithin(s.rollouts, 1, MAX_ROLLOUTS, "planning/rollouts", "rollouts per shot"),
                      requireWithin(s.threads, 0, MAX_THREADS, "planning/threads", "0: one per hardware thread")});
 }
@@ -59,7 +61,8 @@ std::vector<PlanningParameter> planningParameters(PlanningSettings& s)
           {"planning/noise/speed", &s.noise.speed},
           {"planning/noise/a", &s.noise.a},
           {"planning/noise/b", &s.noise.b},
-          {"planning/budget", &s.budget}};
+          {"planning/budget", &s.budget},
+          {"planning/rest_speed", &s.rest_speed}};
 }
 
 Expected<PlanningSettings> readPlanningSettings(ParameterTree& parameters)
@@ -73,6 +76,19 @@ Expected<PlanningSettings> readPlanningSettings(ParameterTree& parameters)
       !status)
     return status.error();
   return s;
+}
+
+Status settleAtRest(TableBall& ball, double rest_speed, double ball_radius)
+{
+  const double speed = std::max(ball.state.velocity.norm(), ball.state.angular_velocity.norm() * ball_radius);
+  if (speed > rest_speed)
+    return Error{ErrorKind::BallsMoving, "table.balls",
+                 "ball \"" + ball.id + "\" moves at " + formatNumber(speed) +
+                     " m/s, faster than ~planning/rest_speed (" + formatNumber(rest_speed) +
+                     " m/s): it must be at rest; wait until it stops"};
+  ball.state.velocity.setZero();
+  ball.state.angular_velocity.setZero();
+  return {};
 }
 
 Expected<bool> applyPlanningOverride(PlanningSettings& settings, const std::string& name, double value)

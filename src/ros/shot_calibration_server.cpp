@@ -17,6 +17,7 @@ constexpr double DEFAULT_POSITION_NOISE = 0.002;  // m, a camera tracker's typic
 constexpr double DEFAULT_BUDGET = 60.0;           // s
 constexpr double MAX_BUDGET = 3600.0;             // s
 constexpr int MAX_STARTS = 1000;
+constexpr double FEEDBACK_RATE = 10.0;  // Hz, at most
 
 template <class Response>
 bool failWith(const Error& error, const char* service, Response& response)
@@ -44,7 +45,7 @@ Expected<std::vector<FitParameter>> fitParameters(const std::vector<std::string>
   return parameters;
 }
 
-Status readFitOptions(const FitCalibration::Request& request, int threads, double& position_noise, FitOptions& options)
+Status readFitOptions(const FitCalibrationGoal& request, int threads, double& position_noise, FitOptions& options)
 {
   position_noise = request.position_noise == 0.0 ? DEFAULT_POSITION_NOISE : request.position_noise;
   if (!(std::isfinite(position_noise) && position_noise > 0.0))
@@ -83,7 +84,7 @@ std::vector<std::pair<std::string, Eigen::Vector2d>> centres(const std::vector<T
   return placed;
 }
 
-void fillAnswer(const TrackFit& fitted, std::size_t shots, FitCalibration::Response& response)
+void fillAnswer(const TrackFit& fitted, std::size_t shots, FitCalibrationResult& response)
 {
   const FitResult& fit = fitted.fit;
   for (const FittedParameter& p : fit.parameters)
@@ -114,16 +115,21 @@ void fillAnswer(const TrackFit& fitted, std::size_t shots, FitCalibration::Respo
 
 ShotCalibrationServer::ShotCalibrationServer(ros::NodeHandle& private_node, NodeAccess access,
                                              const RecorderLimits& limits, int threads)
-    : access_(std::move(access)), threads_(threads), recorder_(limits)
+    : access_(std::move(access)),
+      threads_(threads),
+      recorder_(limits),
+      action_server_(
+          private_node, "fit_calibration", [this](const FitCalibrationGoalConstPtr& goal) { execute(goal); }, false)
 {
+  action_server_.start();
   record_service_ = private_node.advertiseService("record_shot", &ShotCalibrationServer::recordShot, this);
-  fit_service_ = private_node.advertiseService("fit_calibration", &ShotCalibrationServer::fit, this);
+  fit_service_ = private_node.advertiseService("fit_calibration_now", &ShotCalibrationServer::fitNow, this);
   clear_service_ = private_node.advertiseService("clear_shots", &ShotCalibrationServer::clearShots, this);
 }
 
 void ShotCalibrationServer::observe(const TableState& table)
 {
-  // No wait for tf: a sighting that cannot be placed now is dropped rather than hold up the ones behind it.
+  // No wait for tf: the node hands over only sightings tf can place (its message filter held them until then).
   auto balls = access_.place_table(table, false);
   if (!balls)
   {
@@ -202,29 +208,81 @@ bool ShotCalibrationServer::recordShot(RecordShot::Request& request, RecordShot:
   return true;
 }
 
-bool ShotCalibrationServer::fit(FitCalibration::Request& request, FitCalibration::Response& response)
+FitCalibrationResult ShotCalibrationServer::fit(const FitCalibrationGoal& goal, const FitHooks& hooks)
 {
+  FitCalibrationResult result;
+  const auto fail = [&](const Error& error)
+  {
+    failWith(error, "fit_calibration", result);
+    return result;
+  };
   const ShotConfiguration configuration = access_.configuration();
-  auto parameters = fitParameters(request.fit, configuration);
+  auto parameters = fitParameters(goal.fit, configuration);
   if (!parameters)
-    return failWith(parameters.error(), "fit_calibration", response);
+    return fail(parameters.error());
   double position_noise = DEFAULT_POSITION_NOISE;
   FitOptions options;
-  if (Status status = readFitOptions(request, threads_, position_noise, options); !status)
-    return failWith(status.error(), "fit_calibration", response);
+  if (Status status = readFitOptions(goal, threads_, position_noise, options); !status)
+    return fail(status.error());
+  options.stop = hooks.stop;
+  options.progress = hooks.progress;
   std::vector<ObservedShot> shots;
   {
     std::lock_guard<std::mutex> lock(recorder_mutex_);
     shots = recorder_.shots();
   }
   if (shots.empty())
-    return failWith(invalidArgument("shots", "none recorded: record executed shots with ~record_shot first"),
-                    "fit_calibration", response);
+    return fail(invalidArgument("shots", "none recorded: record executed shots with ~record_shot first"));
   auto fitted = fitTracks(configuration, parameters.value(), shots, position_noise, options);
   if (!fitted)
-    return failWith(inRequestTerms(fitted.error()), "fit_calibration", response);
-  fillAnswer(fitted.value(), shots.size(), response);
-  return true;
+    return fail(inRequestTerms(fitted.error()));
+  fillAnswer(fitted.value(), shots.size(), result);
+  return result;
+}
+
+FitCalibrationResult ShotCalibrationServer::fitRecorded(const std::string& call, const FitCalibrationGoal& goal,
+                                                        const FitHooks& hooks)
+{
+  const ros::WallTime start = ros::WallTime::now();
+  FitCalibrationResult result = fit(goal, hooks);
+  if (access_.record)
+    access_.record(call, (ros::WallTime::now() - start).toSec(), result.error_code, result.message);
+  return result;
+}
+
+void ShotCalibrationServer::execute(const FitCalibrationGoalConstPtr& goal)
+{
+  FitHooks hooks;
+  ros::WallTime last_feedback;
+  hooks.progress = [this, &last_feedback](const FitProgress& progress)
+  {
+    // At most FEEDBACK_RATE messages a second: a fast model iterates far more often than a client reads.
+    const ros::WallTime now = ros::WallTime::now();
+    if ((now - last_feedback).toSec() < 1.0 / FEEDBACK_RATE)
+      return;
+    last_feedback = now;
+    FitCalibrationFeedback feedback;
+    feedback.local_fits = static_cast<uint32_t>(progress.local_fits);
+    feedback.iterations = static_cast<uint32_t>(progress.iterations);
+    feedback.chi2 = 2.0 * progress.cost;
+    feedback.best_chi2 = 2.0 * progress.best_cost;
+    feedback.elapsed = progress.seconds;
+    action_server_.publishFeedback(feedback);
+  };
+  hooks.stop = [this]() { return action_server_.isPreemptRequested() || !ros::ok(); };
+  const FitCalibrationResult result = fitRecorded("fit_calibration", *goal, hooks);
+  if (result.success && action_server_.isPreemptRequested())
+    action_server_.setPreempted(result, "preempted: the best fit so far");
+  else if (!result.success)
+    action_server_.setAborted(result, result.message);
+  else
+    action_server_.setSucceeded(result);
+}
+
+bool ShotCalibrationServer::fitNow(FitCalibrationNow::Request& request, FitCalibrationNow::Response& response)
+{
+  response.result = fitRecorded("fit_calibration_now", request.goal, FitHooks{});
+  return true;  // a goal that cannot be fitted is an answer, not a failed call
 }
 
 bool ShotCalibrationServer::clearShots(std_srvs::Trigger::Request& /*request*/, std_srvs::Trigger::Response& response)

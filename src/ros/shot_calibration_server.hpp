@@ -1,6 +1,9 @@
 #pragma once
 
-#include <billiard_shot_planner/FitCalibration.h>
+#include <actionlib/server/simple_action_server.h>
+#include <billiard_shot_planner/ErrorCode.h>
+#include <billiard_shot_planner/FitCalibrationAction.h>
+#include <billiard_shot_planner/FitCalibrationNow.h>
 #include <billiard_shot_planner/RecordShot.h>
 #include <billiard_shot_planner/TableState.h>
 #include <geometry_msgs/PoseStamped.h>
@@ -16,8 +19,9 @@
 namespace billiard_shot_planner
 {
 /// Calibration's ROS face: ~record_shot records an executed shot, every TableState the node receives extends the
-/// recorded shots' tracks (ShotRecorder), ~fit_calibration fits the node's parameters to them (fitTracks) and
-/// ~clear_shots forgets them. What it needs of the node — its configuration and tf — comes in as functions.
+/// recorded shots' tracks (ShotRecorder), the action ~fit_calibration (feedback, preemption with the best fit so far)
+/// and the service ~fit_calibration_now fit the node's parameters to them (fitTracks), and ~clear_shots forgets them.
+/// What it needs of the node — its configuration and tf — comes in as functions.
 class ShotCalibrationServer
 {
 public:
@@ -29,6 +33,8 @@ public:
     std::function<Expected<std::vector<TableBall>>(const TableState&, bool wait_for_tf)> place_table;
     /// The cue's tip and direction in the table frame; its ball is left for the caller to place.
     std::function<Expected<CuePlacement>(const geometry_msgs::PoseStamped&, double speed)> place_cue;
+    /// A call answered ("fit_calibration", its wall-clock seconds, its code and message), for the node's health.
+    std::function<void(const std::string&, double, const ErrorCode&, const std::string&)> record;
   };
 
   ShotCalibrationServer(ros::NodeHandle& private_node, NodeAccess access, const RecorderLimits& limits, int threads);
@@ -38,7 +44,18 @@ public:
 
 private:
   bool recordShot(RecordShot::Request& request, RecordShot::Response& response);
-  bool fit(FitCalibration::Request& request, FitCalibration::Response& response);
+  /// What a fit is told while it runs: when to stop and where to report.
+  struct FitHooks
+  {
+    std::function<bool()> stop;
+    std::function<void(const FitProgress&)> progress;
+  };
+  /// The result of a goal (success false with the reason when it cannot be fitted).
+  FitCalibrationResult fit(const FitCalibrationGoal& goal, const FitHooks& hooks);
+  /// fit(), timed and recorded as `call`.
+  FitCalibrationResult fitRecorded(const std::string& call, const FitCalibrationGoal& goal, const FitHooks& hooks);
+  void execute(const FitCalibrationGoalConstPtr& goal);
+  bool fitNow(FitCalibrationNow::Request& request, FitCalibrationNow::Response& response);
   bool clearShots(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
   /// The shot as recorded: the cue placed at the cue ball of the table before the strike.
   Expected<ObservedShot> executedShot(const RecordShot::Request& request, double strike_time);
@@ -47,6 +64,7 @@ private:
   int threads_;
   std::mutex recorder_mutex_;  ///< guards recorder_ against the subscriber's and the services' threads
   ShotRecorder recorder_;
+  actionlib::SimpleActionServer<FitCalibrationAction> action_server_;
   ros::ServiceServer record_service_;
   ros::ServiceServer fit_service_;
   ros::ServiceServer clear_service_;

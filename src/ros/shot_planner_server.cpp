@@ -37,6 +37,7 @@ Status readGoal(const PlanShotGoal& goal, const PlanningSettings& settings, Plan
   request.threads = settings.threads;
   return {};
 }
+
 }  // namespace
 
 ShotPlannerServer::ShotPlannerServer(ros::NodeHandle& private_node, NodeAccess access, std::string frame,
@@ -73,6 +74,9 @@ Expected<PlanRequest> ShotPlannerServer::planRequest(const PlanShotGoal& goal, P
   if (!balls)
     return balls.error();
   request.balls = balls.value();
+  for (TableBall& ball : request.balls)
+    if (Status status = settleAtRest(ball, settings.rest_speed, configuration.ball_radius); !status)
+      return status.error();
   for (TableBall& ball : request.balls)
     ball.state.position.z() = configuration.ball_radius;
   if (goal.cue_region_radius > 0.0)

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "billiard_shot_planner/core/validation.hpp"
+#include "billiard_shot_planner/planning/stroke_conventions.hpp"
 #include "error_codes.hpp"
 #include "parameter_names.hpp"
 #include "prediction_message.hpp"
@@ -17,8 +18,15 @@ namespace billiard_shot_planner
 {
 namespace
 {
+/// Table states waiting for their turn, and sightings waiting for tf.
+constexpr uint32_t TABLE_STATE_QUEUE = 100;
 /// A quaternion's norm may differ from 1 by this much (float round-off from other nodes), no more.
 constexpr double QUATERNION_NORM_TOLERANCE = 1e-3;
+
+bool isFinite(double x, double y, double z)
+{
+  return std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
+}
 
 bool hasCueBall(const TableState& table)
 {
@@ -37,9 +45,14 @@ Status checkTable(const TableState& table)
     return invalidArgument("table.header.frame_id", "is empty: give the frame the balls are expressed in");
   for (std::size_t i = 0; i < table.balls.size(); ++i)
   {
-    const auto& p = table.balls[i].position;
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      return invalidArgument("table.balls[" + std::to_string(i) + "].position", "contains NaN or infinite values");
+    const std::string field = "table.balls[" + std::to_string(i) + "].";
+    const auto& ball = table.balls[i];
+    if (!isFinite(ball.position.x, ball.position.y, ball.position.z))
+      return invalidArgument(field + "position", "contains NaN or infinite values");
+    if (!isFinite(ball.velocity.x, ball.velocity.y, ball.velocity.z))
+      return invalidArgument(field + "velocity", "contains NaN or infinite values");
+    if (!isFinite(ball.angular_velocity.x, ball.angular_velocity.y, ball.angular_velocity.z))
+      return invalidArgument(field + "angular_velocity", "contains NaN or infinite values");
   }
   return {};
 }
@@ -64,9 +77,46 @@ Status checkCue(const geometry_msgs::PoseStamped& pose, double speed)
   return {};
 }
 
+/// A request gives its cue as a stroke when the stroke's speed is not 0 (NaN included: refused below).
+bool usesStroke(const PredictShot::Request& r)
+{
+  return r.stroke.speed != 0.0;
+}
+
+Status checkStroke(const PlayerStroke& s)
+{
+  if (s.convention != "" && s.convention != "pooltool" && s.convention != "fastfiz")
+    return invalidArgument("stroke.convention",
+                           "must be \"\" (this package's), \"pooltool\" or \"fastfiz\", got \"" + s.convention + "\"");
+  if (!(std::isfinite(s.speed) && s.speed > 0.0))
+    return invalidArgument("stroke.speed", "must be > 0 m/s (0: the cue is cue_pose), got " + formatNumber(s.speed));
+  for (const auto& [value, name] : {std::pair{s.phi, "stroke.phi"}, std::pair{s.theta, "stroke.theta"},
+                                    std::pair{s.a, "stroke.a"}, std::pair{s.b, "stroke.b"}})
+    if (!std::isfinite(value))
+      return invalidArgument(name, "must be finite");
+  return {};
+}
+
+/// A stroke's error with its field named as the request's ("stroke.a").
+Error inStroke(Error error)
+{
+  error.field = "stroke." + error.field;
+  return error;
+}
+
+/// The stroke in this package's convention (`ball_radius`: the radius FastFiz's millimetres are of).
+Stroke strokeOf(const PlayerStroke& s, double ball_radius)
+{
+  if (s.convention == "pooltool")
+    return fromPooltool({s.speed, s.phi, s.theta, s.a, s.b});
+  if (s.convention == "fastfiz")
+    return fromFastFiz({s.a, s.b, s.theta, s.phi, s.speed}, ball_radius);
+  return {s.phi, s.theta, s.speed, s.a, s.b};
+}
+
 Status checkRequest(const PredictShot::Request& r, bool cue_ball_in_table)
 {
-  if (Status status = checkCue(r.cue_pose, r.cue_speed); !status)
+  if (Status status = usesStroke(r) ? checkStroke(r.stroke) : checkCue(r.cue_pose, r.cue_speed); !status)
     return status;
   const auto& b = r.ball_position.point;
   if (!cue_ball_in_table && (!std::isfinite(b.x) || !std::isfinite(b.y) || !std::isfinite(b.z)))
@@ -106,11 +156,26 @@ ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& pri
   tuning_server_->setCallback([this](ShotPredictorConfig& tuning, uint32_t level) { retune(tuning, level); });
   calibration_ = std::make_unique<ShotCalibrationServer>(private_node, calibrationAccess(), settings_.recording,
                                                          settings_.threads);
-  // A queue, not just the latest: every sighting counts for calibration.
-  ros::SubscribeOptions table_options = ros::SubscribeOptions::create<TableState>(
-      "table_state", 100, [this](const TableState::ConstPtr& table) { storeTable(table); }, ros::VoidPtr(),
-      &table_queue_);
-  table_subscriber_ = private_node.subscribe(table_options);
+  // A queue, not just the latest: every sighting counts for calibration. The latest table is taken as it comes;
+  // a sighting goes on to calibration once tf can place it at its stamp (it waits in the filter's queue until then).
+  ros::NodeHandle table_node(private_node);
+  table_node.setCallbackQueue(&table_queue_);
+  table_subscriber_.subscribe(table_node, "table_state", TABLE_STATE_QUEUE);
+  table_subscriber_.registerCallback(&ShotPredictorNode::storeTable, this);
+  sightings_ = std::make_unique<tf2_ros::MessageFilter<TableState>>(table_subscriber_, buffer_, settings_.target_frame,
+                                                                    TABLE_STATE_QUEUE, table_node);
+  sightings_->registerCallback(&ShotPredictorNode::observeSighting, this);
+  sightings_->registerFailureCallback(
+      [](const TableState::ConstPtr& table, tf2_ros::FilterFailureReason reason)
+      {
+        if (!table->balls.empty())
+          ROS_WARN_THROTTLE(10.0, "a table_state in frame '%s' was not recorded for calibration: %s",
+                            table->header.frame_id.c_str(),
+                            reason == tf2_ros::filter_failure_reasons::EmptyFrameID ? "no frame"
+                            : reason == tf2_ros::filter_failure_reasons::OutTheBack
+                                ? "older than tf's buffer"
+                                : "tf could not place it before the queue overflowed");
+      });
   table_spinner_.start();
   service_ = private_node.advertiseService("predict_shot", &ShotPredictorNode::predict, this);
   configuration_service_ =
@@ -222,6 +287,8 @@ ShotCalibrationServer::NodeAccess ShotPredictorNode::calibrationAccess()
       return status.error();
     return placeCuePose(pose, speed);
   };
+  access.record = [this](const std::string& call, double seconds, const ErrorCode& code, const std::string& message)
+  { health_.recordCall(call, seconds, code.val, message, ros::Time::now()); };
   return access;
 }
 
@@ -233,6 +300,10 @@ void ShotPredictorNode::storeTable(const TableState::ConstPtr& table)
     latest_table_ = *table;
     latest_table_received_ = ros::Time::now();
   }
+}
+
+void ShotPredictorNode::observeSighting(const TableState::ConstPtr& table)
+{
   calibration_->observe(*table);
 }
 
@@ -251,22 +322,30 @@ Expected<TableState> ShotPredictorNode::tableFor(const TableState& given) const
 
 Expected<std::vector<TableBall>> ShotPredictorNode::placeTable(const TableState& table, double tf_timeout) const
 {
-  std::vector<TableBall> balls;
-  for (std::size_t i = 0; i < table.balls.size(); ++i)
+  if (table.balls.empty())
+    return std::vector<TableBall>{};
+  geometry_msgs::TransformStamped to_table;
+  try
   {
-    geometry_msgs::PointStamped point;
-    point.header = table.header;
-    point.point = table.balls[i].position;
-    try
-    {
-      point = buffer_.transform(point, settings_.target_frame, ros::Duration(tf_timeout));
-    }
-    catch (const tf2::TransformException& e)
-    {
-      return transformError("table.header.frame_id", e);
-    }
-    TableBall ball{table.balls[i].id, {}};
-    ball.state.position = Eigen::Vector3d(point.point.x, point.point.y, 0.0);
+    to_table = buffer_.lookupTransform(settings_.target_frame, table.header.frame_id, table.header.stamp,
+                                       ros::Duration(tf_timeout));
+  }
+  catch (const tf2::TransformException& e)
+  {
+    return transformError("table.header.frame_id", e);
+  }
+  std::vector<TableBall> balls;
+  for (const billiard_shot_planner::Ball& given : table.balls)
+  {
+    geometry_msgs::Point position;
+    geometry_msgs::Vector3 velocity, angular_velocity;
+    tf2::doTransform(given.position, position, to_table);
+    tf2::doTransform(given.velocity, velocity, to_table);  // vectors turn with the frame; they do not shift
+    tf2::doTransform(given.angular_velocity, angular_velocity, to_table);
+    TableBall ball{given.id, {}};
+    ball.state.position = Eigen::Vector3d(position.x, position.y, 0.0);
+    ball.state.velocity = Eigen::Vector3d(velocity.x, velocity.y, 0.0);
+    ball.state.angular_velocity = Eigen::Vector3d(angular_velocity.x, angular_velocity.y, angular_velocity.z);
     balls.push_back(ball);
   }
   return balls;
@@ -293,7 +372,9 @@ Expected<CuePlacement> ShotPredictorNode::placeCuePose(const geometry_msgs::Pose
 
 Expected<CuePlacement> ShotPredictorNode::placeCue(const PredictShot::Request& request, bool cue_ball_in_table) const
 {
-  auto cue = placeCuePose(request.cue_pose, request.cue_speed);
+  // A stroke is placed at the cue ball once its place is known (strikeAt); a pose places the cue itself.
+  auto cue =
+      usesStroke(request) ? Expected<CuePlacement>(CuePlacement{}) : placeCuePose(request.cue_pose, request.cue_speed);
   if (!cue || cue_ball_in_table)
     return cue;  // the table gives the cue ball's place when it holds the cue ball
   auto placed = placePoint(request.ball_position, "ball_position");
@@ -357,11 +438,26 @@ bool ShotPredictorNode::answer(PredictShot::Request& request, PredictShot::Respo
   if (!cue)
     return fail(cue.error());
   std::vector<TableBall> others;
-  for (const TableBall& ball : balls.value())
-    if (ball.id == CUE_BALL_ID)
-      cue.value().ball = ball.state.position.head<2>();
-    else
+  for (TableBall& ball : balls.value())
+  {
+    if (ball.id != CUE_BALL_ID)
+    {
       others.push_back(ball);
+      continue;
+    }
+    // The cue strikes a ball at rest: a tracked cue ball's small motion is the tracker's noise.
+    if (Status status = settleAtRest(ball, settings_.planning.rest_speed, configuration.value().ball_radius); !status)
+      return fail(status.error());
+    cue.value().ball = ball.state.position.head<2>();
+  }
+  if (usesStroke(request))
+  {
+    const double radius = configuration.value().ball_radius;
+    auto struck = placeStroke(strokeOf(request.stroke, radius), cue.value().ball, radius);
+    if (!struck)
+      return fail(inStroke(struck.error()));
+    cue = struck;
+  }
   auto outcome = predictShot(cue.value(), configuration.value(), others);
   if (!outcome)
     return fail(outcome.error());

@@ -1,14 +1,17 @@
 #pragma once
 
 #include <billiard_shot_planner/GetConfiguration.h>
+#include <billiard_shot_planner/PlayerStroke.h>
 #include <billiard_shot_planner/PredictShot.h>
 #include <billiard_shot_planner/ShotPredictorConfig.h>
 #include <billiard_shot_planner/TableState.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <dynamic_reconfigure/server.h>
+#include <message_filters/subscriber.h>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
+#include <tf2_ros/message_filter.h>
 #include <tf2_ros/transform_listener.h>
 #include <boost/thread/recursive_mutex.hpp>
 
@@ -53,6 +56,8 @@ private:
   /// The table's balls in the table frame (at rest on the cloth), waiting for tf at most `tf_timeout` seconds.
   Expected<std::vector<TableBall>> placeTable(const TableState& table, double tf_timeout) const;
   void storeTable(const TableState::ConstPtr& table);
+  /// A table state tf can place at its stamp, for calibration's tracks (held back by sightings_ until it can).
+  void observeSighting(const TableState::ConstPtr& table);
   /// The node's configuration (and, when `planning` is given, its planning settings) with per-call overrides.
   Expected<ShotConfiguration> configurationWith(const std::vector<std::string>& names,
                                                 const std::vector<double>& values,
@@ -82,7 +87,9 @@ private:
   /// ~table_state has a queue and a thread of its own, so that no long call (a plan, a fit) holds up its intake.
   ros::CallbackQueue table_queue_;
   ros::AsyncSpinner table_spinner_{1, &table_queue_};
-  ros::Subscriber table_subscriber_;
+  message_filters::Subscriber<TableState> table_subscriber_;
+  /// Sightings wait here until tf can place them at their stamps (a camera's frame whose transform comes later).
+  std::unique_ptr<tf2_ros::MessageFilter<TableState>> sightings_;
   mutable std::mutex table_mutex_;  ///< guards latest_table_ against the subscriber's callback
   TableState latest_table_;
   ros::Time latest_table_received_;  ///< when latest_table_ arrived

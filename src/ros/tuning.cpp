@@ -1,52 +1,63 @@
 #include "tuning.hpp"
+
+#include <algorithm>
+
 #include "parameter_names.hpp"
 
 namespace billiard_shot_planner
 {
 namespace
 {
-/// Each tunable value and where it lives in the configuration; one table serves both directions.
+using Descriptions = std::vector<ShotPredictorConfig::AbstractParamDescriptionConstPtr>;
+
+/// Each number of the tuning paired with the configuration's value it tunes, found by name (tuningName): the cfg's
+/// list is the only list. An error names a tuning number that is not a parameter of the node.
 template <class Visitor>
-void visitTunables(ShotConfiguration& c, ShotPredictorConfig& t, Visitor&& visit)
+Status visitNumbers(ShotConfiguration& c, ShotPredictorConfig& tuning, Visitor&& visit)
 {
-  visit(t.cue_mass, c.cue_mass);
-  visit(t.cue_end_mass, c.cue_end_mass);
-  visit(t.ball_mass, c.ball_mass);
-  visit(t.ball_radius, c.ball_radius);
-  visit(t.stiffness_ratio, c.stiffness_ratio);
-  visit(t.cue_contact_restitution, c.cue_contact.restitution);
-  visit(t.cue_contact_friction, c.cue_contact.friction);
-  visit(t.cue_contact_eta2, c.cue_contact.eta2);
-  visit(t.cloth_restitution, c.table.cloth.restitution);
-  visit(t.cloth_friction, c.table.cloth.friction);
-  visit(t.cloth_eta2, c.table.cloth.eta2);
-  visit(t.cushion_restitution, c.table.cushion.restitution);
-  visit(t.cushion_friction, c.table.cushion.friction);
-  visit(t.cushion_eta2, c.table.cushion.eta2);
-  visit(t.sliding_friction, c.motion.sliding_friction);
-  visit(t.rolling_friction, c.motion.rolling_friction);
-  visit(t.spinning_friction, c.motion.spinning_friction);
-  visit(t.planar, c.motion.planar);
-  visit(t.min_bounce_speed, c.motion.min_bounce_speed);
+  const std::vector<NamedParameter> parameters = numericParameters(c);
+  for (const auto& description : ShotPredictorConfig::__getParamDescriptions__())
+  {
+    const auto number = boost::dynamic_pointer_cast<const ShotPredictorConfig::ParamDescription<double>>(description);
+    if (!number)
+      continue;
+    const auto parameter =
+        std::find_if(parameters.begin(), parameters.end(),
+                     [&](const NamedParameter& p) { return tuningName(parameterName(p.name)) == description->name; });
+    if (parameter == parameters.end())
+      return invalidArgument(description->name, "is not the tuning name of a parameter of the node");
+    visit(tuning.*(number->field), *parameter->value);
+  }
+  return {};
 }
 }  // namespace
+
+std::string tuningName(std::string parameter_name)
+{
+  std::replace(parameter_name.begin(), parameter_name.end(), '/', '_');
+  return parameter_name;
+}
 
 ShotPredictorConfig toTuning(const ShotConfiguration& configuration)
 {
   ShotConfiguration c = configuration;
   ShotPredictorConfig tuning = ShotPredictorConfig::__getDefault__();
-  visitTunables(c, tuning, [](auto& tuned, const auto& value) { tuned = value; });
-  tuning.rolling_model = c.motion.rolling_model == RollingModel::Paper ? "paper" : "pooltool";
+  // A tuning number that is no parameter keeps its default here; applyTuning() refuses it (test_tuning.cpp).
+  static_cast<void>(visitNumbers(c, tuning, [](double& tuned, double value) { tuned = value; }));
+  tuning.motion_rolling_model = c.motion.rolling_model == RollingModel::Paper ? "paper" : "pooltool";
+  tuning.motion_planar = c.motion.planar;
   return tuning;
 }
 
 Expected<ShotConfiguration> applyTuning(ShotConfiguration configuration, const ShotPredictorConfig& tuning)
 {
   ShotPredictorConfig t = tuning;
-  visitTunables(configuration, t, [](const auto& tuned, auto& value) { value = tuned; });
-  if (t.rolling_model != "paper" && t.rolling_model != "pooltool")
-    return invalidArgument("rolling_model", "must be paper or pooltool");
-  configuration.motion.rolling_model = t.rolling_model == "paper" ? RollingModel::Paper : RollingModel::Pooltool;
+  if (Status status = visitNumbers(configuration, t, [](double tuned, double& value) { value = tuned; }); !status)
+    return status.error();
+  if (t.motion_rolling_model != "paper" && t.motion_rolling_model != "pooltool")
+    return invalidArgument("motion/rolling_model", "must be paper or pooltool");
+  configuration.motion.rolling_model = t.motion_rolling_model == "paper" ? RollingModel::Paper : RollingModel::Pooltool;
+  configuration.motion.planar = t.motion_planar;
   if (Status status = namedAsParameter(validate(configuration)); !status)
     return status.error();
   return configuration;

@@ -216,3 +216,46 @@ TEST(LeastSquaresFit, BadInputIsRefusedNamingTheField)
   ASSERT_FALSE(failing.ok());
   EXPECT_EQ(failing.error().code, bsp::ErrorKind::NumericalFailure);
 }
+
+// A fit reports each iteration and stops when asked, with the best point so far: the exponential decay
+// y = 2 exp(-1.5 x) fitted from (1, 0.2) takes several iterations, each no worse than the one before (the
+// Levenberg–Marquardt iterate moves only on a step that lowers the cost); stopped after its second report, no other
+// starting point is tried and the answer is that report's point, not converged.
+TEST(LeastSquaresFit, ReportsEachIterationAndStopsWithTheBestPointSoFar)
+{
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(40, 0.0, 3.9);
+  const Eigen::VectorXd y = (2.0 * (-1.5 * x.array()).exp()).matrix();
+  const bsp::ResidualFunction residuals = [&](const std::vector<double>& p, Eigen::VectorXd& r)
+  {
+    r = ((p[0] * (-p[1] * x.array()).exp()).matrix() - y) / 0.01;
+    return true;
+  };
+  const std::vector<bsp::FitParameter> parameters = {{"amplitude", 1.0, 0.0, 10.0}, {"rate", 0.2, 0.0, 10.0}};
+  bsp::FitOptions options;
+  options.starts = 8;
+  std::vector<bsp::FitProgress> reports;
+  options.progress = [&](const bsp::FitProgress& progress) { reports.push_back(progress); };
+  const auto whole = bsp::fitLeastSquares(parameters, static_cast<int>(x.size()), residuals, options);
+  ASSERT_TRUE(whole.ok()) << whole.error().describe();
+  EXPECT_TRUE(whole->converged) << whole->message;
+  ASSERT_GE(reports.size(), 3u);
+  for (std::size_t k = 1; k < reports.size(); ++k)
+  {
+    if (reports[k].local_fits == reports[k - 1].local_fits)
+    {
+      EXPECT_LE(reports[k].cost, reports[k - 1].cost * (1.0 + 1e-12)) << k;
+    }
+  }
+  EXPECT_NEAR(whole->parameters[1].value, 1.5, 1e-6);
+
+  reports.clear();
+  options.stop = [&] { return reports.size() >= 2; };
+  const auto stopped = bsp::fitLeastSquares(parameters, static_cast<int>(x.size()), residuals, options);
+  ASSERT_TRUE(stopped.ok()) << stopped.error().describe();
+  EXPECT_FALSE(stopped->converged);
+  EXPECT_EQ(stopped->message.rfind("stopped on request", 0), 0u) << stopped->message;
+  ASSERT_EQ(reports.size(), 2u);
+  EXPECT_EQ(reports.back().local_fits, 1);
+  EXPECT_NEAR(stopped->final_cost, reports.back().cost, 1e-9 * reports.back().cost);
+  EXPECT_GT(stopped->final_cost, whole->final_cost);
+}

@@ -1,7 +1,7 @@
 // The recorder that turns a camera's stream of sightings into observed shots: each sighting lands in the track of
 // the shot whose window holds it, with its time counted from that strike; shots may be recorded after they were
-// struck; the next strike closes the window before it; late, repeated and foreign sightings are dropped; the
-// limits hold. And a fit from recorded sightings finds the constant that drew them.
+// struck; the next strike closes the window before it; late sightings take their place, repeated and foreign ones are
+// dropped; the limits hold. And a fit from recorded sightings finds the constant that drew them.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -81,19 +81,22 @@ TEST(ShotRecorder, TheNextStrikeEndsTheWindowOfTheShotBeforeIt)
   EXPECT_NEAR(recorder.shots()[1].tracks.at(bsp::CUE_BALL_ID)[0].t, 0.5, 1e-12);
 }
 
-TEST(ShotRecorder, LateRepeatedForeignAndNonFiniteSightingsAreDropped)
+TEST(ShotRecorder, LateSightingsTakeTheirPlaceAndRepeatedForeignAndNonFiniteOnesAreDropped)
 {
   bsp::ShotRecorder recorder;
   ASSERT_TRUE(recorder.record(shotWith({"one"}), 0.0).ok());
   recorder.observe(sighting(0.2, 0.2));
-  recorder.observe(sighting(0.1, 0.1));              // out of order: both balls' points dropped
-  recorder.observe(sighting(0.2, 0.2));              // repeated
+  recorder.observe(sighting(0.1, 0.1));              // out of order: both balls' points go before the first
+  recorder.observe(sighting(0.2, 0.2));              // repeated: both dropped
   recorder.observe({0.3, {{"ghost", {0.0, 0.0}}}});  // not on the table at the strike: ignored
   recorder.observe({0.4, {{bsp::CUE_BALL_ID, {NAN, 0.0}}}});
   recorder.observe({NAN, {{bsp::CUE_BALL_ID, {0.0, 0.0}}}});
-  EXPECT_EQ(trackLength(recorder.shots()[0], bsp::CUE_BALL_ID), 1u);
+  const auto& track = recorder.shots()[0].tracks.at(bsp::CUE_BALL_ID);
+  ASSERT_EQ(track.size(), 2u);
+  EXPECT_NEAR(track[0].t, 0.1, 1e-12);
+  EXPECT_NEAR(track[1].t, 0.2, 1e-12);
   EXPECT_EQ(recorder.shots()[0].tracks.count("ghost"), 0u);
-  EXPECT_EQ(recorder.droppedPoints(), 5u);
+  EXPECT_EQ(recorder.droppedPoints(), 3u);
 }
 
 TEST(ShotRecorder, ItsLimitsHoldAndBadStrikesAreRefusedByName)

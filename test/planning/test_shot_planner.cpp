@@ -111,8 +111,8 @@ TEST(ShotPlanner, AStraightInShotIsPlannedAlongTheLineOfCentres)
 }
 
 // The planner's pot probability of a 40° cut against 1 000 fresh noisy rollouts drawn here, with another generator,
-// and replayed at the default tolerance (the planner's run at 1e-8; a stroke whose cue touches a ball or a rail is a
-// miss in both): the two binomial estimates agree within three standard deviations of their difference.
+// and replayed at the default tolerance (the planner runs at PLANNING_TOLERANCE; a stroke whose cue touches a ball or a
+// rail is a miss in both): the two binomial estimates agree within three standard deviations of their difference.
 TEST(ShotPlanner, ItsPotProbabilityAgreesWithAFreshMeasurement)
 {
   bsp::PlanRequest request = cutShot(0.5, 0.6, 40.0);
@@ -320,6 +320,12 @@ TEST(ShotPlanner, BadRequestsAreRefusedNamingTheField)
   r = good;
   r.cue_region = bsp::CueRegion{{0.0, 0.0}, -0.1};
   EXPECT_EQ(field(r), "cue_region.radius");
+  r = good;
+  r.balls[1].state.velocity.x() = 1e-3;  // a plan starts from a table at rest: a moving ball has its own kind
+  const auto moving = bsp::planShot(r, bsp::ShotConfiguration{});
+  ASSERT_FALSE(moving.ok());
+  EXPECT_EQ(moving.error().code, bsp::ErrorKind::BallsMoving);
+  EXPECT_EQ(moving.error().field, "balls");
 }
 
 // A cue ball frozen to the target, their line of centres 3° off the line to the corner pocket: whatever the cue's

@@ -130,6 +130,20 @@ class PlanShotTest(unittest.TestCase):
             self.assertEqual(result.error_code.val, ErrorCode.INVALID_ARGUMENT, field)
             self.assertIn(field, result.message)
 
+    def test_a_moving_table_is_refused_with_its_code_and_a_trackers_noise_is_not(self):
+        """A plan starts from a table at rest: a ball rolling at 0.3 m/s ends it with BALLS_MOVING, a ball whose
+        tracked speed is below ~planning/rest_speed (0.01 m/s) is at rest."""
+        goal = straight_in_goal()
+        goal.table.balls[1].velocity.y = 0.3
+        state, result, _ = self.run_goal(goal)
+        self.assertEqual(state, GoalStatus.ABORTED, result.message)
+        self.assertEqual(result.error_code.val, ErrorCode.BALLS_MOVING, result.message)
+        self.assertIn("rest_speed", result.message)
+        goal.table.balls[1].velocity.y = 0.003
+        goal.table.balls[0].angular_velocity.z = 0.1  # rad/s: 0.003 m/s at the ball's radius
+        answer = self.plan_now(goal).result
+        self.assertTrue(answer.success and answer.found, answer.message)
+
     def test_a_goal_that_pots_nothing_is_aborted_with_the_closest_attempt(self):
         """The straight-in shot with the cue limited to 0.1 m/s: the object ball leaves at most at about 0.13 m/s
         and rolls at most v^2 / (2 mu_r g) = 0.09 m against the 0.53 m to the pocket, so nothing pots. The action

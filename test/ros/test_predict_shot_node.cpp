@@ -27,6 +27,7 @@
 #include <set>
 #include <thread>
 
+#include "billiard_shot_planner/planning/stroke.hpp"
 #include "shot_fixtures.hpp"
 
 namespace bsp = billiard_shot_planner;
@@ -279,16 +280,16 @@ TEST_F(PredictShotNode, RunTimeTuningRejectsBadValuesWithTheReasonAndStaysUsable
 {
   const auto request = toRequest(shot_fixtures::masse());
   const auto before = call(request);
-  // Out of range and NaN: rejected whole, never clamped; the answer is the node's unchanged configuration.
+  // Beyond an open bound (clamped to it by dynamic_reconfigure: a mass of 0), across parameters, or NaN: rejected
+  // whole; the answer is the node's unchanged configuration.
   struct Bad
   {
     const char* name;
     double value;
     const char* field;  // as the reason names it: the node's parameter name
   };
-  for (const Bad& bad :
-       {Bad{"cue_mass", -5.0, "cue_mass"}, Bad{"ball_radius", 0.001, "table/cushion_height"},
-        Bad{"cloth_restitution", 1.5, "table/cloth/restitution"}, Bad{"cue_end_mass", std::nan(""), "cue_end_mass"}})
+  for (const Bad& bad : {Bad{"cue_mass", -5.0, "cue_mass"}, Bad{"ball_radius", 0.001, "table/cushion_height"},
+                         Bad{"cue_end_mass", std::nan(""), "cue_end_mass"}})
   {
     const std::string name = bad.name;
     const auto answer = tuneDouble(name, bad.value);
@@ -298,6 +299,11 @@ TEST_F(PredictShotNode, RunTimeTuningRejectsBadValuesWithTheReasonAndStaysUsable
     EXPECT_EQ(after.ball_angular_velocity.y, before.ball_angular_velocity.y) << name;
   }
   EXPECT_EQ(doubleIn(tuneDouble("ball_radius", 0.001), "ball_radius"), 0.0286);
+  // Beyond a closed bound: clamped to it (the cfg's range is the parameter's own), and applied.
+  const auto clamped = tuneDouble("table_cloth_restitution", 1.5);
+  EXPECT_EQ(rejectedIn(clamped), "");
+  EXPECT_EQ(doubleIn(clamped, "table_cloth_restitution"), 1.0);
+  EXPECT_EQ(rejectedIn(tuneDouble("table_cloth_restitution", 0.51625)), "");
   // A valid change after the rejections is applied (no stuck server), and so is the restore.
   const auto applied = tuneDouble("cue_contact_friction", 0.5);
   EXPECT_EQ(rejectedIn(applied), "");
@@ -515,6 +521,147 @@ TEST_F(PredictShotNode, TheTableIsPredictedBallByBall)
   EXPECT_NEAR(again.prediction.balls[1].final_position.y, final_one.y, 1e-6);
 }
 
+// A tracked ball in motion starts with its velocity and spin, as the core library starts it, whatever frame they come
+// in: the vectors turn with the frame and do not shift with it. The cue ball must be at rest (the tracker's noise,
+// below ~planning/rest_speed, is dropped).
+TEST_F(PredictShotNode, AMovingBallStartsWithItsTrackedMotion)
+{
+  constexpr double SPEED = 0.3;  // m/s along +y, rolling: the spin about -x is SPEED / R
+  auto request = followWithObjectBall();
+  request.table.balls[0].velocity.y = SPEED;
+  request.table.balls[0].angular_velocity.x = -SPEED / bsp::ShotConfiguration{}.ball_radius;
+  const auto response = call(request);
+  ASSERT_TRUE(response.success) << response.message;
+
+  bsp::CuePlacement cue = shot_fixtures::follow();
+  const auto& o = request.cue_pose.pose.orientation;
+  cue.direction = Eigen::Quaterniond(o.w, o.x, o.y, o.z).normalized() * Eigen::Vector3d::UnitX();
+  bsp::TableBall one{"one", {}};
+  one.state.position << request.table.balls[0].position.x, request.table.balls[0].position.y, 0.0;
+  one.state.velocity << 0.0, SPEED, 0.0;
+  one.state.angular_velocity << -SPEED / bsp::ShotConfiguration{}.ball_radius, 0.0, 0.0;
+  const auto expected = bsp::predictShot(cue, bsp::ShotConfiguration{}, {one}).value();
+  const auto& final_one = response.prediction.balls[1].final_position;
+  EXPECT_NEAR(final_one.x, expected.table.balls[1].finalState().position.x(), 1e-9);
+  EXPECT_NEAR(final_one.y, expected.table.balls[1].finalState().position.y(), 1e-9);
+  const auto at_rest = call(followWithObjectBall());
+  ASSERT_TRUE(at_rest.success) << at_rest.message;
+  // The motion counts: 0.05 s after the strike, before the cue ball reaches it, the ball has rolled about
+  // 0.3 m/s × 0.05 s = 15 mm where the resting one has not moved.
+  const auto at = [](const bsp::BallPrediction& ball, double t)
+  { return *std::find_if(ball.path.begin(), ball.path.end(), [&](const auto& sample) { return sample.time >= t; }); };
+  EXPECT_NEAR(at(response.prediction.balls[1], 0.05).position.y - at(at_rest.prediction.balls[1], 0.05).position.y,
+              SPEED * at(response.prediction.balls[1], 0.05).time, 1e-3);
+
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  auto rotated = request;
+  rotated.table.header.frame_id = "rotated";
+  geometry_msgs::PointStamped point;
+  point.header = request.table.header;
+  point.point = request.table.balls[0].position;
+  rotated.table.balls[0].position = buffer.transform(point, "rotated", ros::Duration(5.0)).point;
+  for (auto [given, turned] :
+       {std::pair{request.table.balls[0].velocity, &rotated.table.balls[0].velocity},
+        std::pair{request.table.balls[0].angular_velocity, &rotated.table.balls[0].angular_velocity}})
+  {
+    geometry_msgs::Vector3Stamped vector;
+    vector.header = request.table.header;
+    vector.vector = given;
+    *turned = buffer.transform(vector, "rotated", ros::Duration(5.0)).vector;
+  }
+  const auto again = call(rotated);
+  ASSERT_TRUE(again.success) << again.message;
+  EXPECT_NEAR(again.prediction.balls[1].final_position.x, final_one.x, 1e-6);
+  EXPECT_NEAR(again.prediction.balls[1].final_position.y, final_one.y, 1e-6);
+}
+
+TEST_F(PredictShotNode, AMovingCueBallIsRefusedWithItsCodeAndItsNoiseIsDropped)
+{
+  auto request = followWithObjectBall();
+  bsp::Ball cue;
+  cue.id = "cue";
+  cue.position.x = shot_fixtures::follow().ball.x();
+  cue.position.y = shot_fixtures::follow().ball.y();
+  request.table.balls.push_back(cue);
+  const auto at_rest = call(request);
+  ASSERT_TRUE(at_rest.success) << at_rest.message;
+
+  request.table.balls[1].velocity.x = 0.5;  // m/s, fifty times the default ~planning/rest_speed
+  const auto moving = call(request);
+  EXPECT_FALSE(moving.success);
+  EXPECT_EQ(moving.error_code.val, bsp::ErrorCode::BALLS_MOVING) << moving.message;
+  EXPECT_NE(moving.message.find("rest_speed"), std::string::npos) << moving.message;
+
+  request.table.balls[1].velocity.x = 0.002;  // a tracker's noise
+  const auto noisy = call(request);
+  ASSERT_TRUE(noisy.success) << noisy.message;
+  EXPECT_EQ(noisy.prediction.balls[1].final_position.x, at_rest.prediction.balls[1].final_position.x);
+  EXPECT_EQ(noisy.prediction.balls[1].final_position.y, at_rest.prediction.balls[1].final_position.y);
+}
+
+// A stroke is the same shot as the cue pose it describes, in this package's convention and in pooltool's and
+// FastFiz's (their numbers converted by hand here: pooltool's heading is 90° more, its a of the opposite sign;
+// FastFiz's heading 90° less, its offsets in millimetres).
+TEST_F(PredictShotNode, AStrokeIsTheSameShotAsItsCuePoseInEveryConvention)
+{
+  constexpr double R = 0.0286, DEG = M_PI / 180.0;
+  const bsp::Stroke stroke{30.0 * DEG, 12.0 * DEG, 2.5, 0.3, -0.2};
+  const Eigen::Vector2d ball(-0.4, 0.1);
+  const auto cue = bsp::placeStroke(stroke, ball, R);
+  ASSERT_TRUE(cue.ok()) << cue.error().describe();
+  const auto as_pose = call(toRequest(cue.value()));
+  ASSERT_TRUE(as_pose.success) << as_pose.message;
+
+  bsp::PlayerStroke ours, pooltool, fastfiz;
+  ours.phi = stroke.phi;
+  ours.theta = stroke.theta;
+  ours.speed = stroke.speed;
+  ours.a = stroke.a;
+  ours.b = stroke.b;
+  pooltool.convention = "pooltool";
+  pooltool.phi = 120.0;
+  pooltool.theta = 12.0;
+  pooltool.speed = 2.5;
+  pooltool.a = -0.3;
+  pooltool.b = -0.2;
+  fastfiz.convention = "fastfiz";
+  fastfiz.phi = -60.0;
+  fastfiz.theta = 12.0;
+  fastfiz.speed = 2.5;
+  fastfiz.a = 0.3 * R * 1e3;
+  fastfiz.b = -0.2 * R * 1e3;
+  for (const auto& given : {ours, pooltool, fastfiz})
+  {
+    auto request = toRequest(cue.value());
+    request.cue_pose = geometry_msgs::PoseStamped();  // unused with a stroke
+    request.cue_speed = 0.0;
+    request.stroke = given;
+    const auto as_stroke = call(request);
+    ASSERT_TRUE(as_stroke.success) << given.convention << ": " << as_stroke.message;
+    for (const auto& [x, y] : {std::pair{as_stroke.ball_velocity, as_pose.ball_velocity},
+                               std::pair{as_stroke.ball_angular_velocity, as_pose.ball_angular_velocity}})
+    {
+      const double scale = std::max(1.0, std::hypot(y.x, y.y, y.z));
+      EXPECT_NEAR(x.x, y.x, 1e-9 * scale) << given.convention;
+      EXPECT_NEAR(x.y, y.y, 1e-9 * scale) << given.convention;
+      EXPECT_NEAR(x.z, y.z, 1e-9 * scale) << given.convention;
+    }
+  }
+  auto bad = toRequest(cue.value());
+  bad.stroke = ours;
+  bad.stroke.convention = "snooker";
+  EXPECT_NE(call(bad).message.find("stroke.convention"), std::string::npos);
+  bad.stroke = ours;
+  bad.stroke.a = 1.2;  // off the ball
+  const auto off = call(bad);
+  EXPECT_FALSE(off.success);
+  EXPECT_NE(off.message.find("stroke.a"), std::string::npos) << off.message;
+  bad.stroke = ours;
+  bad.stroke.speed = -1.0;
+  EXPECT_NE(call(bad).message.find("stroke.speed"), std::string::npos);
+}
+
 TEST_F(PredictShotNode, BadTablesAreAnsweredWithAReason)
 {
   auto duplicate = followWithObjectBall();
@@ -524,11 +671,14 @@ TEST_F(PredictShotNode, BadTablesAreAnsweredWithAReason)
   no_frame.table.header.frame_id = "";
   auto not_finite = followWithObjectBall();
   not_finite.table.balls[0].position.y = std::numeric_limits<double>::quiet_NaN();
+  auto moving_nan = followWithObjectBall();
+  moving_nan.table.balls[0].angular_velocity.z = std::numeric_limits<double>::infinity();
   auto overlap = followWithObjectBall();
   overlap.table.balls[0].position.x = shot_fixtures::follow().ball.x() + 0.03;
   for (const auto& [request, field] :
        {std::pair{duplicate, "table.balls[1].id"}, std::pair{no_frame, "table.header.frame_id"},
-        std::pair{not_finite, "table.balls[0].position"}, std::pair{overlap, "table.balls[0].position"}})
+        std::pair{not_finite, "table.balls[0].position"}, std::pair{overlap, "table.balls[0].position"},
+        std::pair{moving_nan, "table.balls[0].angular_velocity"}})
   {
     const auto response = call(request);
     EXPECT_FALSE(response.success) << field;

@@ -6,7 +6,6 @@
 #include "parameter_names.hpp"
 #include "prediction_message.hpp"
 #include "shot_fixtures.hpp"
-#include "tuning.hpp"
 
 namespace bsp = billiard_shot_planner;
 
@@ -54,24 +53,6 @@ TEST(ParameterNames, TheNodeNamesConfigurationPathsWithSlashes)
   d.table.cloth.eta2 = 0;
   EXPECT_EQ(bsp::namedAsParameter(bsp::validate(d)).error().field, "table/cloth/eta2");
   EXPECT_TRUE(bsp::namedAsParameter(bsp::validate(bsp::ShotConfiguration{})).ok());
-}
-
-TEST(Tuning, RoundTripAndRejection)
-{
-  bsp::ShotConfiguration c;
-  c.cue_contact.friction = 0.55;
-  c.motion.rolling_model = bsp::RollingModel::Pooltool;
-  auto tuning = bsp::toTuning(c);
-  EXPECT_EQ(tuning.cue_contact_friction, 0.55);
-  EXPECT_EQ(tuning.rolling_model, "pooltool");
-  tuning.cloth_eta2 = 4.0;
-  const auto tuned = bsp::applyTuning(c, tuning).value();
-  EXPECT_EQ(tuned.table.cloth.eta2, 4.0);
-  EXPECT_EQ(tuned.cue_contact.friction, 0.55);
-  tuning.ball_radius = 0.05;  // the cushion nose (0.0363 m) would be below the ball's centre... still valid
-  EXPECT_TRUE(bsp::applyTuning(c, tuning).ok());
-  tuning.ball_radius = 0.015;  // nose above the ball: rejected
-  EXPECT_EQ(bsp::applyTuning(c, tuning).error().field, "table/cushion_height");
 }
 
 // A cue ball frozen to a ball: the message lists every contact of the strike by name with its impulse, the ball the

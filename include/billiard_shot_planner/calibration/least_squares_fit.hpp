@@ -19,6 +19,16 @@ struct FitParameter
   double upper = std::numeric_limits<double>::infinity();
 };
 
+/// Where a fit is, for a caller that reports it (FitOptions::progress).
+struct FitProgress
+{
+  int local_fits = 0;  ///< local fits begun so far (each from one starting point)
+  int iterations = 0;  ///< of the current local fit
+  double cost = 0.0;   ///< ½ Σ r² of the current local fit's iterate, residuals in standard deviations
+  double best_cost = std::numeric_limits<double>::infinity();  ///< of the best local fit ended so far
+  double seconds = 0.0;                                        ///< since the fit began
+};
+
 /// How a fit searches and what it calls determined.
 struct FitOptions
 {
@@ -43,6 +53,11 @@ struct FitOptions
   /// Central differences with this step relative to max(|value|, scale): the residuals come from an integration
   /// with its own tolerance, so the step stays well above it.
   double relative_step = 1e-4;
+  /// Asked between the fit's steps: true ends it as a spent budget does, with the best point so far (converged
+  /// false; an action's preemption). Empty: never.
+  std::function<bool()> stop;
+  /// Called after each iteration of a local fit (an action's feedback), on the fitting thread. Empty: not called.
+  std::function<void(const FitProgress&)> progress;
 };
 
 /// The starting points a fit that does not explain its data searches from at least (FitOptions::starts).

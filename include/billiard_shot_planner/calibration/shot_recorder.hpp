@@ -33,8 +33,9 @@ struct RecorderLimits
 
 /// Turns a stream of sightings into observed shots: a shot is recorded with its cue and the balls where they stood,
 /// and every sighting stamped within its track duration after the strike — those already seen included, up to the
-/// next recorded strike — becomes a point of its balls' tracks. Sightings may arrive late or out of order: a point
-/// that would not come after the last of its track is dropped and counted. Not thread-safe.
+/// next recorded strike — becomes a point of its balls' tracks. Sightings may arrive late or out of order: each
+/// point takes its place in time order, and one at a time its track already has is a repeat, dropped and counted.
+/// Not thread-safe.
 class ShotRecorder
 {
 public:

@@ -18,6 +18,7 @@ enum class ErrorKind
   NumericalFailure,      ///< the integrator or a root finder failed
   Unavailable,           ///< an input the call needs is not available (yet): a retry may succeed
   Stale,                 ///< an input is older than the caller allows: a fresh one is needed
+  BallsMoving,           ///< the call needs the balls at rest and one moves: wait until they stop
 };
 
 const char* toString(ErrorKind code);

@@ -7,7 +7,8 @@
 
 namespace billiard_shot_planner
 {
-/// A stroke in the convention of pooltool and FastFiz (scenarios/cue_stroke.hpp): the cue's direction φ in the
+/// A stroke in this package's convention (scenarios/cue_stroke.hpp; pooltool's and FastFiz's differ in signs, units
+/// and frames: stroke_conventions.hpp): the cue's direction φ in the
 /// cloth plane (counter-clockwise from +x), its elevation θ, its speed, and the hit point's offsets a (right, seen
 /// along the cue) and b (up) from the ball's centre in ball radii.
 struct Stroke

@@ -6,7 +6,8 @@
 
 namespace billiard_shot_planner
 {
-/// A stroke as players describe it, in the convention of pooltool and FastFiz. Table frame, z up; angles in
+/// A stroke as players describe it (pooltool and FastFiz write it with other signs, units and frames:
+/// planning/stroke_conventions.hpp). Table frame, z up; angles in
 /// radians, offsets in ball radii.
 ///
 /// The hit point lies on the near side of the ball at `a` to the right of its centre (as seen along the cue's
