@@ -119,9 +119,9 @@ ShotCalibrationServer::ShotCalibrationServer(ros::NodeHandle& private_node, Node
       threads_(threads),
       recorder_(limits),
       action_server_(
-          private_node, "fit_calibration", [this](const FitCalibrationGoalConstPtr& goal) { execute(goal); }, false)
+          private_node, "fit_calibration", [this](const FitCalibrationGoal& goal) { return check(goal); },
+          [this](const FitCalibrationGoalConstPtr& goal) { execute(goal); })
 {
-  action_server_.start();
   record_service_ = private_node.advertiseService("record_shot", &ShotCalibrationServer::recordShot, this);
   fit_service_ = private_node.advertiseService("fit_calibration_now", &ShotCalibrationServer::fitNow, this);
   clear_service_ = private_node.advertiseService("clear_shots", &ShotCalibrationServer::clearShots, this);
@@ -208,36 +208,58 @@ bool ShotCalibrationServer::recordShot(RecordShot::Request& request, RecordShot:
   return true;
 }
 
+Expected<ShotCalibrationServer::FitJob> ShotCalibrationServer::prepare(const FitCalibrationGoal& goal)
+{
+  FitJob job;
+  job.configuration = access_.configuration();
+  auto parameters = fitParameters(goal.fit, job.configuration);
+  if (!parameters)
+    return parameters.error();
+  job.parameters = parameters.value();
+  if (Status status = readFitOptions(goal, threads_, job.position_noise, job.options); !status)
+    return status.error();
+  {
+    std::lock_guard<std::mutex> lock(recorder_mutex_);
+    job.shots = recorder_.shots();
+  }
+  if (job.shots.empty())
+    return invalidArgument("shots", "none recorded: record executed shots with ~record_shot first");
+  return job;
+}
+
 FitCalibrationResult ShotCalibrationServer::fit(const FitCalibrationGoal& goal, const FitHooks& hooks)
 {
   FitCalibrationResult result;
-  const auto fail = [&](const Error& error)
+  auto job = prepare(goal);
+  if (!job)
   {
-    failWith(error, "fit_calibration", result);
+    failWith(job.error(), "fit_calibration", result);
     return result;
-  };
-  const ShotConfiguration configuration = access_.configuration();
-  auto parameters = fitParameters(goal.fit, configuration);
-  if (!parameters)
-    return fail(parameters.error());
-  double position_noise = DEFAULT_POSITION_NOISE;
-  FitOptions options;
-  if (Status status = readFitOptions(goal, threads_, position_noise, options); !status)
-    return fail(status.error());
-  options.stop = hooks.stop;
-  options.progress = hooks.progress;
-  std::vector<ObservedShot> shots;
-  {
-    std::lock_guard<std::mutex> lock(recorder_mutex_);
-    shots = recorder_.shots();
   }
-  if (shots.empty())
-    return fail(invalidArgument("shots", "none recorded: record executed shots with ~record_shot first"));
-  auto fitted = fitTracks(configuration, parameters.value(), shots, position_noise, options);
+  FitJob& j = job.value();
+  j.options.stop = hooks.stop;
+  j.options.progress = hooks.progress;
+  auto fitted = fitTracks(j.configuration, j.parameters, j.shots, j.position_noise, j.options);
   if (!fitted)
-    return fail(inRequestTerms(fitted.error()));
-  fillAnswer(fitted.value(), shots.size(), result);
+  {
+    failWith(inRequestTerms(fitted.error()), "fit_calibration", result);
+    return result;
+  }
+  fillAnswer(fitted.value(), j.shots.size(), result);
   return result;
+}
+
+std::optional<FitCalibrationResult> ShotCalibrationServer::check(const FitCalibrationGoal& goal)
+{
+  const ros::WallTime start = ros::WallTime::now();
+  const auto job = prepare(goal);
+  if (job)
+    return std::nullopt;
+  FitCalibrationResult refused;
+  failWith(job.error(), "fit_calibration: rejected", refused);
+  if (access_.record)
+    access_.record("fit_calibration", (ros::WallTime::now() - start).toSec(), refused.error_code, refused.message);
+  return refused;
 }
 
 FitCalibrationResult ShotCalibrationServer::fitRecorded(const std::string& call, const FitCalibrationGoal& goal,

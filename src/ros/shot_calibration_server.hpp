@@ -1,6 +1,5 @@
 #pragma once
 
-#include <actionlib/server/simple_action_server.h>
 #include <billiard_shot_planner/ErrorCode.h>
 #include <billiard_shot_planner/FitCalibrationAction.h>
 #include <billiard_shot_planner/FitCalibrationNow.h>
@@ -12,9 +11,12 @@
 
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include "billiard_shot_planner/calibration/shot_recorder.hpp"
+#include "billiard_shot_planner/calibration/track_fit.hpp"
+#include "checked_action_server.hpp"
 
 namespace billiard_shot_planner
 {
@@ -50,10 +52,23 @@ private:
     std::function<bool()> stop;
     std::function<void(const FitProgress&)> progress;
   };
+  /// What a goal asks of the fit, read and checked.
+  struct FitJob
+  {
+    ShotConfiguration configuration;
+    std::vector<FitParameter> parameters;
+    double position_noise = 0.0;
+    FitOptions options;
+    std::vector<ObservedShot> shots;
+  };
+  Expected<FitJob> prepare(const FitCalibrationGoal& goal);
   /// The result of a goal (success false with the reason when it cannot be fitted).
   FitCalibrationResult fit(const FitCalibrationGoal& goal, const FitHooks& hooks);
   /// fit(), timed and recorded as `call`.
   FitCalibrationResult fitRecorded(const std::string& call, const FitCalibrationGoal& goal, const FitHooks& hooks);
+  /// A goal that cannot be fitted as it is (a bad field, no recorded shot): the result to reject it with; nothing
+  /// for a goal the fit takes.
+  std::optional<FitCalibrationResult> check(const FitCalibrationGoal& goal);
   void execute(const FitCalibrationGoalConstPtr& goal);
   bool fitNow(FitCalibrationNow::Request& request, FitCalibrationNow::Response& response);
   bool clearShots(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
@@ -64,7 +79,7 @@ private:
   int threads_;
   std::mutex recorder_mutex_;  ///< guards recorder_ against the subscriber's and the services' threads
   ShotRecorder recorder_;
-  actionlib::SimpleActionServer<FitCalibrationAction> action_server_;
+  CheckedActionServer<FitCalibrationAction> action_server_;
   ros::ServiceServer record_service_;
   ros::ServiceServer fit_service_;
   ros::ServiceServer clear_service_;

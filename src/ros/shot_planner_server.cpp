@@ -47,9 +47,9 @@ ShotPlannerServer::ShotPlannerServer(ros::NodeHandle& private_node, NodeAccess a
       sample_spacing_(sample_spacing),
       markers_(markers),
       action_server_(
-          private_node, "plan_shot", [this](const PlanShotGoalConstPtr& goal) { execute(goal); }, false)
+          private_node, "plan_shot", [this](const PlanShotGoal& goal) { return check(goal); },
+          [this](const PlanShotGoalConstPtr& goal) { execute(goal); })
 {
-  action_server_.start();
   service_ = private_node.advertiseService("plan_shot_now", &ShotPlannerServer::planNow, this);
 }
 
@@ -121,6 +121,22 @@ void ShotPlannerServer::publishMarkers(const ShotPlan& plan, const ShotConfigura
   visualization_msgs::MarkerArray markers = trajectoryMarkers(plan.outcome, configuration, frame_, sample_spacing_);
   markers.markers.push_back(spreadMarker(plan.best, frame_, configuration.ball_radius));
   markers_.publish(markers);
+}
+
+std::optional<PlanShotResult> ShotPlannerServer::check(const PlanShotGoal& goal) const
+{
+  const ros::WallTime start = ros::WallTime::now();
+  PlanningSettings settings;
+  ShotConfiguration configuration;
+  const auto request = planRequest(goal, settings, configuration);
+  const Status valid = request ? validate(request.value(), configuration) : Status(request.error());
+  if (valid)
+    return std::nullopt;
+  PlanShotResult refused = failure(valid.error());
+  ROS_WARN("plan_shot: rejected: %s", refused.message.c_str());
+  if (access_.record)
+    access_.record("plan_shot", (ros::WallTime::now() - start).toSec(), refused.error_code, refused.message);
+  return refused;
 }
 
 void ShotPlannerServer::execute(const PlanShotGoalConstPtr& goal)

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <actionlib/server/simple_action_server.h>
 #include <billiard_shot_planner/ErrorCode.h>
 #include <billiard_shot_planner/PlanShotAction.h>
 #include <billiard_shot_planner/PlanShotNow.h>
@@ -10,10 +9,12 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "billiard_shot_planner/planning/shot_planner.hpp"
+#include "checked_action_server.hpp"
 #include "planning_settings.hpp"
 
 namespace billiard_shot_planner
@@ -45,6 +46,9 @@ public:
                     const ros::Publisher& markers);
 
 private:
+  /// A goal that cannot be planned as it is (a bad field, a frame tf does not know, a moving table): the result to
+  /// reject it with; nothing for a goal the planner takes.
+  std::optional<PlanShotResult> check(const PlanShotGoal& goal) const;
   void execute(const PlanShotGoalConstPtr& goal);
   bool planNow(PlanShotNow::Request& request, PlanShotNow::Response& response);
   /// The result of a goal (success false with the reason when it cannot be planned).
@@ -59,7 +63,7 @@ private:
   std::string frame_;
   double sample_spacing_;
   ros::Publisher markers_;
-  actionlib::SimpleActionServer<PlanShotAction> action_server_;
+  CheckedActionServer<PlanShotAction> action_server_;
   ros::ServiceServer service_;
 };
 

@@ -181,7 +181,7 @@ class CalibrationTest(unittest.TestCase):
         self.assertEqual(answer.error_code.val, ErrorCode.INVALID_ARGUMENT)
         self.fit_action.send_goal(request)
         self.assertTrue(self.fit_action.wait_for_result(rospy.Duration(30)))
-        self.assertEqual(self.fit_action.get_state(), GoalStatus.ABORTED)
+        self.assertEqual(self.fit_action.get_state(), GoalStatus.REJECTED)
         self.assertIn("budget", self.fit_action.get_result().message)
 
         shot = level_cue(0.0, 0.0)

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The planner's ROS interface with an actionlib client: ~plan_shot plans a straight-in pot that ~predict_shot,
 asked independently with the plan's own cue pose and speed, predicts to drop; feedback comes while it plans; a
-preempted goal ends preempted with the best plan so far; every bad goal ends aborted with the reason; the service
+preempted goal ends preempted with the best plan so far; every bad goal is rejected with the reason; the service
 ~plan_shot_now answers the same goals.
 """
 import sys
@@ -101,7 +101,7 @@ class PlanShotTest(unittest.TestCase):
         self.assertEqual(result.plan.target, "one")
         self.assertGreater(result.plan.rollouts, 0)
 
-    def test_bad_goals_are_aborted_with_the_reason(self):
+    def test_bad_goals_are_rejected_with_the_reason(self):
         cases = []
         goal = straight_in_goal()
         goal.target = "seven"
@@ -125,7 +125,7 @@ class PlanShotTest(unittest.TestCase):
         cases.append((goal, "table.balls[1].position"))
         for goal, field in cases:
             state, result, _ = self.run_goal(goal)
-            self.assertEqual(state, GoalStatus.ABORTED, field)
+            self.assertEqual(state, GoalStatus.REJECTED, field)
             self.assertFalse(result.success)
             self.assertEqual(result.error_code.val, ErrorCode.INVALID_ARGUMENT, field)
             self.assertIn(field, result.message)
@@ -136,7 +136,7 @@ class PlanShotTest(unittest.TestCase):
         goal = straight_in_goal()
         goal.table.balls[1].velocity.y = 0.3
         state, result, _ = self.run_goal(goal)
-        self.assertEqual(state, GoalStatus.ABORTED, result.message)
+        self.assertEqual(state, GoalStatus.REJECTED, result.message)
         self.assertEqual(result.error_code.val, ErrorCode.BALLS_MOVING, result.message)
         self.assertIn("rest_speed", result.message)
         goal.table.balls[1].velocity.y = 0.003
