@@ -257,10 +257,13 @@ Expected<StrikeSetup> withMotion(Expected<CueStrike> strike, const json& request
 {
   if (!strike)
     return strike.error();
-  const CueStrike& s = strike.value();
+  CueStrike s = strike.value();
   auto setup = motionSetup(request, options, &s.table_contact, BallProperties{s.ball_mass, s.ball_radius});
   if (!setup)
     return setup.error();
+  // A strike whose request omits its cloth contact stands on the table's cloth (a table file's, when given).
+  if (!request.contains("table_contact"))
+    s.table_contact = setup.value().table.cloth;
   return StrikeSetup{s, setup.value()};
 }
 

@@ -1,8 +1,10 @@
 #include <cmath>
+#include <optional>
 
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "billiard_shot_planner/scenarios/cue_stroke.hpp"
+#include "billiard_shot_planner/shot/shot_prediction.hpp"
 #include "json_fields.hpp"
 
 namespace billiard_shot_planner
@@ -16,15 +18,35 @@ std::vector<double> toVector(const Eigen::Vector3d& v)
   return {v.x(), v.y(), v.z()};
 }
 
-Expected<SurfaceContact> surfaceContact(const json& request, const std::string& key)
+/// The contact `key` of the request: every constant required, or, given `defaults`, each constant it omits (or the
+/// whole contact) theirs.
+Expected<SurfaceContact> surfaceContact(const json& request, const std::string& key,
+                                        const std::optional<SurfaceContact>& defaults = std::nullopt)
 {
-  auto fields = object(request, key, true);
+  auto fields = object(request, key, !defaults);
   if (!fields)
     return fields.error();
-  SurfaceContact surface;
-  if (Status status = readSurfaceContact(fields.value(), key, surface, Presence::Required); !status)
+  SurfaceContact surface = defaults.value_or(SurfaceContact{});
+  if (Status status =
+          readSurfaceContact(fields.value(), key, surface, defaults ? Presence::Optional : Presence::Required);
+      !status)
     return status.error();
   return surface;
+}
+
+/// The node's defaults (config/default.yaml, which ShotConfiguration's defaults are) as a strike's physics.
+CueStrike nodeDefaults()
+{
+  const ShotConfiguration c;
+  CueStrike strike;
+  strike.cue_mass = c.cue_mass;
+  strike.cue_end_mass = c.cue_end_mass;
+  strike.ball_mass = c.ball_mass;
+  strike.ball_radius = c.ball_radius;
+  strike.stiffness_ratio = c.stiffness_ratio;
+  strike.cue_contact = c.cue_contact;
+  strike.table_contact = c.table.cloth;
+  return strike;
 }
 
 /// The hit normal as given, or from the cue axis ("cue_axis_point") and the ball centre ("ball_centre").
@@ -113,13 +135,13 @@ Status readCueAndHitPoint(const json& request, CueStrike& strike)
 
 Expected<CueStrike> strikePhysicsFromJson(const json& request)
 {
-  CueStrike strike;
+  CueStrike strike = nodeDefaults();
   if (Status status = readNumbers(request,
                                   {{"cue_mass", &strike.cue_mass},
                                    {"ball_mass", &strike.ball_mass},
                                    {"ball_radius", &strike.ball_radius},
                                    {"stiffness_ratio", &strike.stiffness_ratio}},
-                                  "", Presence::Required);
+                                  "", Presence::Optional);
       !status)
     return status.error();
   if (Status status = readEndMass(request, strike); !status)
@@ -127,7 +149,7 @@ Expected<CueStrike> strikePhysicsFromJson(const json& request)
   for (auto [name, target] :
        {std::pair{"cue_contact", &strike.cue_contact}, std::pair{"table_contact", &strike.table_contact}})
   {
-    auto surface = surfaceContact(request, name);
+    auto surface = surfaceContact(request, name, *target);
     if (!surface)
       return surface.error();
     *target = surface.value();

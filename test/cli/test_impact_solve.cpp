@@ -184,6 +184,36 @@ TEST(ImpactSolve, CueStrikeAsAStroke)
   EXPECT_FALSE(w["trajectory"]["events"].empty());
 }
 
+// A strike that omits its constants takes the node's: those of config/default.yaml, read here from the file and
+// spelled out in a second request whose answer must be the same; a contact's constants are taken one by one.
+TEST(ImpactSolve, OmittedConstantsAreTheNodesDefaults)
+{
+  const YAML::Node node = YAML::LoadFile(std::string(CONFIG_DIR) + "/default.yaml");
+  const auto contact = [](const YAML::Node& c, double friction)
+  {
+    return nlohmann::json{
+        {"restitution", c["restitution"].as<double>()}, {"friction", friction}, {"eta2", c["eta2"].as<double>()}};
+  };
+  const nlohmann::json cue = {{"phi_deg", 0}, {"theta_deg", 5}, {"speed", 2}, {"a", 0.2}, {"b", -0.3}};
+  nlohmann::json omitted = {{"problem", "cue_strike"}, {"cue", cue}, {"cue_contact", {{"friction", 0.5}}}};
+  nlohmann::json spelled = omitted;
+  spelled["cue_mass"] = node["cue_mass"].as<double>();
+  spelled["cue_end_mass"] = node["cue_end_mass"].as<double>();
+  spelled["ball_mass"] = node["ball_mass"].as<double>();
+  spelled["ball_radius"] = node["ball_radius"].as<double>();
+  spelled["stiffness_ratio"] = node["stiffness_ratio"].as<double>();
+  spelled["cue_contact"] = contact(node["cue_contact"], 0.5);
+  spelled["table_contact"] = contact(node["table"]["cloth"], node["table"]["cloth"]["friction"].as<double>());
+  const SolverRun short_form = runSolver(omitted.dump()), long_form = runSolver(spelled.dump());
+  ASSERT_EQ(short_form.exit_code, 0) << short_form.output;
+  ASSERT_EQ(long_form.exit_code, 0) << long_form.output;
+  const auto a = nlohmann::json::parse(short_form.output), b = nlohmann::json::parse(long_form.output);
+  EXPECT_EQ(a["v"], b["v"]);
+  EXPECT_EQ(a["omega"], b["omega"]);
+  spelled["cue_contact"]["friction"] = 0.7;  // the default tip's friction changes the answer: the 0.5 was read
+  EXPECT_NE(nlohmann::json::parse(runSolver(spelled.dump()).output)["omega"], a["omega"]);
+}
+
 TEST(ImpactSolve, BadStrokesExitWithTwoNamingTheField)
 {
   const std::string cases[][2] = {
@@ -232,8 +262,8 @@ TEST(ImpactSolve, InvalidShotsExitWithTwo)
            "eta2": 7}, "table_contact": {"restitution": 0.5, "friction": 0.2, "eta2": 10}, "stiffness_ratio": 1})",
        "does not approach"},
       {R"({"problem": "cue_strike", "cue_mass": 0.5, "cue_direction": [0, 0, -1], "cue_speed": 2, "ball_mass": 0.17,
-           "ball_radius": 0.0286, "hit_normal": [0, 0, 1], "cue_contact": {"restitution": 0.7, "friction": 0.6},
-           "table_contact": {"restitution": 0.5, "friction": 0.2, "eta2": 10}, "stiffness_ratio": 1})",
+           "ball_radius": 0.0286, "hit_normal": [0, 0, 1], "cue_contact": {"restitution": 0.7, "friction": 0.6,
+           "eta2": -1}, "table_contact": {"restitution": 0.5, "friction": 0.2, "eta2": 10}, "stiffness_ratio": 1})",
        "cue_contact.eta2"},
       {R"({"problem": "cue_strike", "cue_mass": 0.5, "cue_direction": [1, 0, -0.1], "cue_speed": 2,
            "ball_mass": 0.17, "ball_radius": 0.0286, "cue_axis_point": [-0.1, 0.2, 0.0286],
