@@ -149,6 +149,7 @@ ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& pri
   // Latched: a display or a logger that connects later still gets the last prediction.
   prediction_publisher_ = private_node.advertise<ShotPrediction>("prediction", 10, true);
   marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("trajectory_markers", 1, true);
+  marker_publisher_.publish(tableMarkers(settings_.shot.table, settings_.target_frame));  // rviz has a table at once
   // The tuning server starts from the loaded parameters, not from the .cfg defaults.
   tuning_server_ = std::make_unique<dynamic_reconfigure::Server<ShotPredictorConfig>>(
       tuning_mutex_, ros::NodeHandle(private_node, "tuning"));

@@ -240,6 +240,16 @@ std_msgs::ColorRGBA phaseColour(MotionPhase phase)
   return rgba(1.0f, 1.0f, 1.0f);  // white
 }
 
+visualization_msgs::MarkerArray tableMarkers(const Table& table, const std::string& frame)
+{
+  visualization_msgs::MarkerArray array;
+  Marker clear = marker(frame, "", 0, Marker::CUBE);
+  clear.action = Marker::DELETEALL;
+  array.markers.push_back(clear);
+  addTable(array, table, frame);
+  return array;
+}
+
 visualization_msgs::MarkerArray trajectoryMarkers(const ShotOutcome& outcome, const ShotConfiguration& configuration,
                                                   const std::string& frame, double sample_spacing,
                                                   const MarkerStyle& style)

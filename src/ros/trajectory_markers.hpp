@@ -21,6 +21,9 @@ struct MarkerStyle
 /// Colours of the path by phase (RGBA). The visual test looks for these in rviz.
 std_msgs::ColorRGBA phaseColour(MotionPhase phase);
 
+/// The table alone (cloth, cushions, pockets), a DELETEALL first: what the node draws before its first answer.
+visualization_msgs::MarkerArray tableMarkers(const Table& table, const std::string& frame);
+
 /// One array for one prediction, in `frame`: a DELETEALL first, then the path (a LINE_STRIP coloured by phase),
 /// the ball at the start and at the end, velocity and spin arrows at launch, the hit point, the cue, events, the
 /// strike's touching balls (when the cue ball touches others) and the table (cloth, cushions, pockets). Pure function:

@@ -1,5 +1,6 @@
-// The marker builder's rules (conventions/ros.md): DELETEALL first, one namespace per meaning with unique ids, a
-// LINE_STRIP with at least two points and one colour per point, ARROWs with exactly two points, the table frame.
+// The marker builder's rules (rviz's conventions for marker arrays): DELETEALL first, one namespace per meaning with
+// unique ids, a LINE_STRIP with at least two points and one colour per point, ARROWs with exactly two points, the table
+// frame.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -143,4 +144,30 @@ TEST(TrajectoryMarkers, FrozenShotDrawsTheBallsOfTheStrike)
   ASSERT_TRUE(lone.ok());
   for (const Marker& m : bsp::trajectoryMarkers(lone.value(), configuration, "table", 0.01).markers)
     EXPECT_TRUE(m.ns != "strike_contacts" && m.ns != "strike_velocity") << m.ns;
+}
+
+// The table alone, as the node draws it before its first answer: the cloth of the table's size, four cushions and a
+// disc per pocket, after a DELETEALL.
+TEST(TrajectoryMarkers, TheTableAloneIsItsClothCushionsAndPockets)
+{
+  bsp::Table table;
+  table.length = 3.0;
+  table.width = 1.5;
+  const auto array = bsp::tableMarkers(table, "table");
+  ASSERT_FALSE(array.markers.empty());
+  EXPECT_EQ(array.markers.front().action, visualization_msgs::Marker::DELETEALL);
+  std::map<std::string, int> count;
+  for (const auto& m : array.markers)
+  {
+    ++count[m.ns];
+    EXPECT_EQ(m.header.frame_id, "table");
+    if (m.ns == "table")
+    {
+      EXPECT_EQ(m.scale.x, 3.0);
+      EXPECT_EQ(m.scale.y, 1.5);
+    }
+  }
+  EXPECT_EQ(count["table"], 1);
+  EXPECT_EQ(count["cushions"], 4);
+  EXPECT_EQ(count["pockets"], static_cast<int>(table.pockets.size()));
 }

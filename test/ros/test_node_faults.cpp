@@ -8,9 +8,11 @@
 #include <sys/wait.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <unistd.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <dirent.h>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -269,11 +271,27 @@ int main(int argc, char** argv)
   return RUN_ALL_TESTS();
 }
 
-// A node started without a single parameter (rosrun's way) takes every default and answers.
-TEST_F(NodeFaults, ANodeWithoutParametersAnswersWithTheDefaults)
+// A node started without a single parameter (rosrun's way) takes every default, draws the table before any call (a
+// latched array: its cloth and six pockets) and answers.
+TEST_F(NodeFaults, ANodeWithoutParametersDrawsItsTableAndAnswersWithTheDefaults)
 {
   const std::string service = "/bare_predictor/predict_shot";
   ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(30)));
+  ros::NodeHandle node;
+  std::atomic<int> pockets{-1};
+  ros::Subscriber markers = node.subscribe<visualization_msgs::MarkerArray>(
+      "/bare_predictor/trajectory_markers", 1,
+      [&](const visualization_msgs::MarkerArray::ConstPtr& array)
+      {
+        pockets = static_cast<int>(std::count_if(array->markers.begin(), array->markers.end(),
+                                                 [](const auto& m) { return m.ns == "pockets"; }));
+      });
+  for (int attempt = 0; attempt < 100 && pockets < 0; ++attempt)
+  {
+    ros::Duration(0.05).sleep();
+    ros::spinOnce();
+  }
+  EXPECT_EQ(pockets, 6);
   bsp::PredictShot bare, loaded;
   bare.request = shot_fixtures::toRequest(shot_fixtures::follow());
   loaded.request = bare.request;
