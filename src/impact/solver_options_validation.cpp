@@ -18,8 +18,7 @@ constexpr double LOOSEST_RELATIVE_TOLERANCE = 1e-3;
 /// integrator's error norm overflowed into NaN), and above 1e-8 the cut of chattering contacts, 100 absolute
 /// tolerances (chatter_resolution), drops energy that is not negligible: on 300 random strikes, none gains energy
 /// up to 1e-8, one gains 10 % at 1e-6, and 51 gain up to ×5 at 0.009.
-constexpr double FINEST_ABSOLUTE_TOLERANCE = 1e-16;
-constexpr double LOOSEST_ABSOLUTE_TOLERANCE = 1e-8;
+constexpr double FINEST_ABSOLUTE_TOLERANCE = 1e-16;  // the loosest: LOOSEST_ABSOLUTE_TOLERANCE (solver_options.hpp)
 
 /// The longest wall-clock budget of one solve: a minute.
 constexpr double MAX_SECONDS = 60.0;

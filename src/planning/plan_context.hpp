@@ -15,11 +15,6 @@ namespace planning
 {
 using Clock = std::chrono::steady_clock;
 
-/// Relative tolerance of the engine in the planner's rollouts (unless the configuration's is looser): far below the
-/// execution noise (a 0.5 mm offset changes the ball's velocity by 1e-2 relative) and two to three times faster
-/// than the default 1e-12 on cushion hits (bench/NOTES.md).
-constexpr double PLANNING_TOLERANCE = 1e-8;
-
 struct PlanContext
 {
   const PlanRequest& request;

@@ -231,8 +231,8 @@ PlanContext makeContext(const PlanRequest& request, const ShotConfiguration& con
   PlanContext context{request, configuration, Eigen::Vector2d::Zero(), {}, {}, false};
   context.configuration.solver.relative_tolerance =
       std::max(configuration.solver.relative_tolerance, PLANNING_TOLERANCE);
-  context.configuration.solver.absolute_tolerance =
-      std::max(configuration.solver.absolute_tolerance, 1e-2 * PLANNING_TOLERANCE);
+  context.configuration.solver.absolute_tolerance = std::max(
+      configuration.solver.absolute_tolerance, std::min(1e-2 * PLANNING_TOLERANCE, LOOSEST_ABSOLUTE_TOLERANCE));
   for (const TableBall& ball : request.balls)
     if (ball.id == request.cue_ball)
       context.cue_ball = ball.state.position.head<2>();

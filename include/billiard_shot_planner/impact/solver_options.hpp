@@ -52,6 +52,10 @@ struct SolverOptions
   bool quasi_steady_slip = true;
 };
 
+/// The loosest absolute tolerance accepted: coarser, the cut of chattering contacts (100 absolute tolerances) lets
+/// energy rise (bench/NOTES.md, Bounds of work).
+constexpr double LOOSEST_ABSOLUTE_TOLERANCE = 1e-8;
+
 /// Checks every field (InvalidArgument naming `field`.name): relative_tolerance in [2.2e-16, 1e-3],
 /// absolute_tolerance in [1e-16, 1e-8] (coarser, the chatter cut lets energy rise), chatter_energy_fraction and
 /// chatter_resolution finite and >= 0 (0 turns that cut off), chatter_stiffness_growth > 1 (infinity turns it
