@@ -34,21 +34,6 @@ Expected<SurfaceContact> surfaceContact(const json& request, const std::string& 
   return surface;
 }
 
-/// The node's defaults (config/default.yaml, which ShotConfiguration's defaults are) as a strike's physics.
-CueStrike nodeDefaults()
-{
-  const ShotConfiguration c;
-  CueStrike strike;
-  strike.cue_mass = c.cue_mass;
-  strike.cue_end_mass = c.cue_end_mass;
-  strike.ball_mass = c.ball_mass;
-  strike.ball_radius = c.ball_radius;
-  strike.stiffness_ratio = c.stiffness_ratio;
-  strike.cue_contact = c.cue_contact;
-  strike.table_contact = c.table.cloth;
-  return strike;
-}
-
 /// The hit normal as given, or from the cue axis ("cue_axis_point") and the ball centre ("ball_centre").
 Expected<Eigen::Vector3d> hitNormalField(const json& request, const CueStrike& strike)
 {
@@ -135,7 +120,7 @@ Status readCueAndHitPoint(const json& request, CueStrike& strike)
 
 Expected<CueStrike> strikePhysicsFromJson(const json& request)
 {
-  CueStrike strike = nodeDefaults();
+  CueStrike strike = strikePhysics(ShotConfiguration{});  // the node's defaults: config/default.yaml
   if (Status status = readNumbers(request,
                                   {{"cue_mass", &strike.cue_mass},
                                    {"ball_mass", &strike.ball_mass},

@@ -35,6 +35,19 @@ Status validate(const ShotConfiguration& c)
   return validateCushionHeight(c.table.cushion_height, c.ball_radius, "table.cushion_height");
 }
 
+CueStrike strikePhysics(const ShotConfiguration& c)
+{
+  CueStrike strike;
+  strike.cue_mass = c.cue_mass;
+  strike.cue_end_mass = c.cue_end_mass;
+  strike.ball_mass = c.ball_mass;
+  strike.ball_radius = c.ball_radius;
+  strike.cue_contact = c.cue_contact;
+  strike.table_contact = c.table.cloth;
+  strike.stiffness_ratio = c.stiffness_ratio;
+  return strike;
+}
+
 std::vector<NamedParameter> numericParameters(ShotConfiguration& c)
 {
   std::vector<NamedParameter> parameters{{"cue_mass", &c.cue_mass},
@@ -155,17 +168,10 @@ Expected<CueStrikeResult> strikeBall(const CuePlacement& cue, const ShotConfigur
   auto normal = hitNormal(cue.tip, cue.direction, centre, c.ball_radius);
   if (!normal)
     return normal.error();
-  CueStrike strike;
-  strike.cue_mass = c.cue_mass;
-  strike.cue_end_mass = c.cue_end_mass;
+  CueStrike strike = strikePhysics(c);
   strike.cue_direction = cue.direction;
   strike.cue_speed = cue.speed;
-  strike.ball_mass = c.ball_mass;
-  strike.ball_radius = c.ball_radius;
   strike.hit_normal = normal.value();
-  strike.cue_contact = c.cue_contact;
-  strike.table_contact = c.table.cloth;
-  strike.stiffness_ratio = c.stiffness_ratio;
   auto struck =
       strikeOnTable(strike, tableBalls(cue.ball, c.ball_radius, others), 0, c.table, c.ball_contact, c.solver);
   if (!struck)

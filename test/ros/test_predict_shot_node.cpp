@@ -202,6 +202,11 @@ TEST_F(PredictShotNode, BadInputIsAnsweredWithAReason)
   r.override_names = {"cue_end_mass"};
   r.override_values = {std::nan("")};
   cases.push_back({"NaN end mass", r, "cue_end_mass"});
+  // A budget no strike fits in (a microsecond of wall clock): the time limit's own code, the budget named.
+  r = toRequest(shot_fixtures::masse());
+  r.override_names = {"solver/max_seconds"};
+  r.override_values = {1e-6};
+  cases.push_back({"time limit", r, "within 1e-06 s", bsp::ErrorCode::TIME_LIMIT});
   for (const Case& c : cases)
   {
     const auto response = call(c.request);

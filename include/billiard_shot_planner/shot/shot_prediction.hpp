@@ -40,6 +40,10 @@ struct NamedParameter
   double* value;
 };
 
+/// The configuration's cue, ball, tip and cloth as a strike's physics (cue direction, speed and hit point left to
+/// the caller).
+CueStrike strikePhysics(const ShotConfiguration& configuration);
+
 /// Every numeric parameter of the configuration, by name: cue_mass, cue_end_mass, ball_mass, ball_radius,
 /// cue_contact.{restitution,friction,eta2}, stiffness_ratio, table.{length,width,cushion_height,
 /// cushion_stiffness_ratio}, table.cloth.…, table.cushion.…, motion.{gravity,sliding_friction,rolling_friction,
