@@ -19,7 +19,6 @@ namespace json_io
 {
 namespace
 {
-constexpr double DEG = M_PI / 180.0;
 /// Bounds on a request's work: shots and track points (a fit's time is bounded by its budget_ms).
 constexpr std::size_t MAX_CALIBRATION_SHOTS = 200;
 constexpr std::size_t MAX_TRACK_POINTS = 200000;
@@ -94,25 +93,17 @@ Expected<std::map<std::string, std::vector<TrackPoint>>> tracks(const json& shot
   return read;
 }
 
-/// The cue as a stroke, "cue": {"phi_deg", "theta_deg", "speed", "a", "b"}, placed at the cue ball.
+/// The cue as a stroke, "cue": {"phi_deg", "theta_deg", "speed", "a", "b", "convention"}, placed at the cue ball.
 Expected<CuePlacement> strokeCue(const json& shot, const std::string& prefix, const Eigen::Vector2d& ball,
                                  double radius)
 {
   auto fields = object(shot, "cue", true);
   if (!fields)
     return nested(prefix, fields.error());
-  Stroke stroke;
-  double phi_deg = 0.0, theta_deg = 0.0;
-  if (Status status =
-          firstError({readNumbers(fields.value(), {{"phi_deg", &phi_deg}, {"speed", &stroke.speed}}, prefix + ".cue",
-                                  Presence::Required),
-                      readNumbers(fields.value(), {{"theta_deg", &theta_deg}, {"a", &stroke.a}, {"b", &stroke.b}},
-                                  prefix + ".cue")});
-      !status)
-    return status.error();
-  stroke.phi = phi_deg * DEG;
-  stroke.theta = theta_deg * DEG;
-  auto cue = placeStroke(stroke, ball, radius);
+  auto stroke = strokeFromJson(fields.value(), prefix + ".cue", radius);
+  if (!stroke)
+    return stroke.error();
+  auto cue = placeStroke(stroke.value(), ball, radius);
   if (!cue)
     return nested(prefix + ".cue", cue.error());
   return cue;

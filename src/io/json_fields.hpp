@@ -13,6 +13,7 @@
 #include "billiard_shot_planner/impact/solver_options.hpp"
 #include "billiard_shot_planner/io/table_yaml.hpp"
 #include "billiard_shot_planner/motion/table_simulation.hpp"
+#include "billiard_shot_planner/planning/stroke.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "billiard_shot_planner/scenarios/sphere_kinematics.hpp"
 
@@ -47,6 +48,10 @@ Status readSurfaceContact(const json& fields, const std::string& prefix, Surface
 /// default. The error names `prefix`.<key>.
 Status onlyKnownKeys(const json& object, std::initializer_list<const char*> known, const std::string& prefix,
                      std::initializer_list<const char*> also_known = {});
+/// The stroke of a "cue" object {"phi_deg", "theta_deg", "speed", "a", "b", "convention"} (`prefix`: its field's
+/// name): in this package's convention, or, with "convention": "pooltool" or "fastfiz", in theirs (degrees, their
+/// signs and frames; FastFiz's a and b in millimetres of `ball_radius`), converted. Unknown keys are refused.
+Expected<Stroke> strokeFromJson(const json& cue, const std::string& prefix, double ball_radius);
 /// The request's "table_file" (config/tables/snooker_mathavan.yaml): the table, its balls, its ball–ball contact and
 /// its cloth's motion constants, which the request's own fields override. Call only when the request has one.
 Expected<TableFile> tableFile(const json& request);

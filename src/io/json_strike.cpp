@@ -76,18 +76,11 @@ Status readStroke(const json& request, CueStrike& strike)
   auto fields = object(request, "cue", true);
   if (!fields)
     return fields.error();
-  CueStroke stroke;
-  double phi_deg = 0.0, theta_deg = 0.0;
-  if (Status status =
-          readNumbers(fields.value(), {{"phi_deg", &phi_deg}, {"speed", &strike.cue_speed}}, "cue", Presence::Required);
-      !status)
-    return status;
-  if (Status status =
-          readNumbers(fields.value(), {{"theta_deg", &theta_deg}, {"a", &stroke.a}, {"b", &stroke.b}}, "cue");
-      !status)
-    return status;
-  stroke.phi = phi_deg * M_PI / 180.0;
-  stroke.theta = theta_deg * M_PI / 180.0;
+  auto given = strokeFromJson(fields.value(), "cue", strike.ball_radius);
+  if (!given)
+    return given.error();
+  strike.cue_speed = given.value().speed;
+  const CueStroke stroke{given.value().phi, given.value().theta, given.value().a, given.value().b};
   auto geometry = strokeGeometry(stroke);
   if (!geometry)
   {

@@ -214,6 +214,40 @@ TEST(ImpactSolve, OmittedConstantsAreTheNodesDefaults)
   EXPECT_NE(nlohmann::json::parse(runSolver(spelled.dump()).output)["omega"], a["omega"]);
 }
 
+// The same stroke in pooltool's and FastFiz's numbers ("convention"): this package's φ 30°, θ 5°, a 0.2, b −0.3 is
+// pooltool's phi 120° with a −0.2 and FastFiz's phi −60° with a and b in millimetres (docs/stroke_conventions.md).
+TEST(ImpactSolve, AStrokeInPooltoolsOrFastFizsConventionIsTheSameStroke)
+{
+  const auto answer = [](const std::string& cue)
+  {
+    const SolverRun run = runSolver(stroke(cue));
+    EXPECT_EQ(run.exit_code, 0) << cue << "\n" << run.output;
+    return run.exit_code == 0 ? nlohmann::json::parse(run.output) : nlohmann::json();
+  };
+  const auto ours = answer(R"({"phi_deg": 30, "theta_deg": 5, "speed": 2, "a": 0.2, "b": -0.3})");
+  const double mm = 0.028575e3;
+  for (const std::string& cue :
+       {std::string(R"({"convention": "pooltool", "phi_deg": 120, "theta_deg": 5, "speed": 2, "a": -0.2, "b": -0.3})"),
+        R"({"convention": "fastfiz", "phi_deg": -60, "theta_deg": 5, "speed": 2, "a": )" + std::to_string(0.2 * mm) +
+            R"(, "b": )" + std::to_string(-0.3 * mm) + "}"})
+  {
+    const auto theirs = answer(cue);
+    for (int i = 0; i < 3; ++i)
+    {
+      EXPECT_NEAR(theirs["v"][i].get<double>(), ours["v"][i].get<double>(), 1e-9) << cue;
+      EXPECT_NEAR(theirs["omega"][i].get<double>(), ours["omega"][i].get<double>(), 1e-7) << cue;
+    }
+  }
+  for (const auto& [cue, field] :
+       {std::pair{R"({"convention": "snooker", "phi_deg": 0, "speed": 2})", "cue.convention"},
+        std::pair{R"({"phi_deg": 0, "speed": 2, "english": 0.2})", "english"}})
+  {
+    const SolverRun run = runSolver(stroke(cue));
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_NE(run.output.find(field), std::string::npos) << run.output;
+  }
+}
+
 TEST(ImpactSolve, BadStrokesExitWithTwoNamingTheField)
 {
   const std::string cases[][2] = {
