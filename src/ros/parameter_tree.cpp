@@ -63,55 +63,78 @@ const XmlRpc::XmlRpcValue* ParameterTree::find(const std::string& name)
   return node;
 }
 
-Status ParameterTree::read(const std::string& name, double& value)
+namespace
+{
+using Type = XmlRpc::XmlRpcValue::Type;
+
+/// What a parameter read into a T accepts (its types on the parameter server), how an error names it, and the
+/// conversion: a double takes an integer too; an int, a bool and a string only their own type.
+template <class T>
+struct Reading;
+template <>
+struct Reading<double>
+{
+  static constexpr const char* WANTED = "a number";
+  static bool accepts(Type t) { return t == XmlRpc::XmlRpcValue::TypeDouble || t == XmlRpc::XmlRpcValue::TypeInt; }
+  static double convert(XmlRpc::XmlRpcValue& v)
+  {
+    return v.getType() == XmlRpc::XmlRpcValue::TypeInt ? static_cast<int>(v) : static_cast<double>(v);
+  }
+};
+template <>
+struct Reading<int>
+{
+  static constexpr const char* WANTED = "an integer";
+  static bool accepts(Type t) { return t == XmlRpc::XmlRpcValue::TypeInt; }
+  static int convert(XmlRpc::XmlRpcValue& v) { return static_cast<int>(v); }
+};
+template <>
+struct Reading<bool>
+{
+  static constexpr const char* WANTED = "true or false";
+  static bool accepts(Type t) { return t == XmlRpc::XmlRpcValue::TypeBoolean; }
+  static bool convert(XmlRpc::XmlRpcValue& v) { return static_cast<bool>(v); }
+};
+template <>
+struct Reading<std::string>
+{
+  static constexpr const char* WANTED = "a string";
+  static bool accepts(Type t) { return t == XmlRpc::XmlRpcValue::TypeString; }
+  static std::string convert(XmlRpc::XmlRpcValue& v) { return static_cast<std::string>(v); }
+};
+}  // namespace
+
+template <class T>
+Status ParameterTree::readAs(const std::string& name, T& value)
 {
   const XmlRpc::XmlRpcValue* found = find(name);
   if (!found)
     return {};
   XmlRpc::XmlRpcValue copy = *found;  // XmlRpcValue's conversions are not const
-  if (copy.getType() == XmlRpc::XmlRpcValue::TypeDouble)
-    value = static_cast<double>(copy);
-  else if (copy.getType() == XmlRpc::XmlRpcValue::TypeInt)
-    value = static_cast<int>(copy);
-  else
-    return wrongType(name, "a number", copy);
+  if (!Reading<T>::accepts(copy.getType()))
+    return wrongType(name, Reading<T>::WANTED, copy);
+  value = Reading<T>::convert(copy);
   return {};
+}
+
+Status ParameterTree::read(const std::string& name, double& value)
+{
+  return readAs(name, value);
 }
 
 Status ParameterTree::read(const std::string& name, int& value)
 {
-  const XmlRpc::XmlRpcValue* found = find(name);
-  if (!found)
-    return {};
-  XmlRpc::XmlRpcValue copy = *found;
-  if (copy.getType() != XmlRpc::XmlRpcValue::TypeInt)
-    return wrongType(name, "an integer", copy);
-  value = static_cast<int>(copy);
-  return {};
+  return readAs(name, value);
 }
 
 Status ParameterTree::read(const std::string& name, bool& value)
 {
-  const XmlRpc::XmlRpcValue* found = find(name);
-  if (!found)
-    return {};
-  XmlRpc::XmlRpcValue copy = *found;
-  if (copy.getType() != XmlRpc::XmlRpcValue::TypeBoolean)
-    return wrongType(name, "true or false", copy);
-  value = static_cast<bool>(copy);
-  return {};
+  return readAs(name, value);
 }
 
 Status ParameterTree::read(const std::string& name, std::string& value)
 {
-  const XmlRpc::XmlRpcValue* found = find(name);
-  if (!found)
-    return {};
-  XmlRpc::XmlRpcValue copy = *found;
-  if (copy.getType() != XmlRpc::XmlRpcValue::TypeString)
-    return wrongType(name, "a string", copy);
-  value = static_cast<std::string>(copy);
-  return {};
+  return readAs(name, value);
 }
 
 Status ParameterTree::checkEveryParameterWasRead(const std::vector<std::string>& ignored) const

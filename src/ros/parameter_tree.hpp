@@ -35,6 +35,9 @@ public:
   Status checkEveryParameterWasRead(const std::vector<std::string>& ignored) const;
 
 private:
+  /// The one reading behind read(): find, check the type, convert.
+  template <class T>
+  Status readAs(const std::string& name, T& value);
   Status checkRead(const XmlRpc::XmlRpcValue& subtree, const std::string& path,
                    const std::vector<std::string>& ignored) const;
 
