@@ -18,6 +18,7 @@ DEMO_PACKAGES=(
   build-essential cmake
   catkin ros-core-dev python3-catkin-pkg rosbash
   libroscpp-dev libactionlib-dev libactionlib-msgs-dev python3-actionlib libtf2-ros-dev libmessage-filters-dev libtf2-geometry-msgs-dev libtf2-eigen-dev libvisualization-msgs-dev
+  libinteractive-markers-dev
   libgeometry-msgs-dev libstd-srvs-dev python3-std-srvs python3-rospy tf2-tools
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
   libdiagnostic-updater-dev python3-diagnostic-msgs
@@ -25,7 +26,7 @@ DEMO_PACKAGES=(
   rviz xvfb xauth libgl1-mesa-dri imagemagick
 )
 TEST_PACKAGES=(
-  librostest-dev python3-rostest python3-rosbag python3-tf2-ros
+  librostest-dev python3-rostest python3-rosbag python3-tf2-ros python3-visualization-msgs
   libgtest-dev libbenchmark-dev python3-pil
   clang-format clang-tidy catkin-lint
   clang libclang-rt-14-dev

@@ -10,23 +10,26 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
+#include <variant>
 
 namespace billiard_shot_planner
 {
 /// An action server that checks a goal before it takes it, as actionlib means its states: a goal the check refuses
 /// is REJECTED with the check's result (the server never processed it); an accepted goal runs on the server's own
 /// thread, one at a time — a newer goal preempts the running one and recalls a waiting one, as SimpleActionServer
-/// does — and `execute` ends it through setSucceeded, setAborted or setPreempted. The calls inside `execute` act on
-/// the running goal, with SimpleActionServer's names.
-template <class Action>
+/// does — and `execute` ends it through finish() (or setSucceeded, setAborted, setPreempted). The check's work is
+/// not done twice: what it prepared for an accepted goal (a `Job`: the goal read, placed and validated) is what
+/// `execute` is handed. The calls inside `execute` act on the running goal, with SimpleActionServer's names.
+template <class Action, class Job>
 class CheckedActionServer
 {
 public:
   ACTION_DEFINITION(Action)
   using GoalHandle = actionlib::ServerGoalHandle<Action>;
-  /// The result to reject the goal with, or nothing to accept it.
-  using Check = std::function<std::optional<Result>(const Goal&)>;
-  using Execute = std::function<void(const GoalConstPtr&)>;
+  /// The job of an accepted goal, or the result to reject it with.
+  using Check = std::function<std::variant<Job, Result>(const Goal&)>;
+  using Execute = std::function<void(const GoalConstPtr&, Job&)>;
 
   CheckedActionServer(const ros::NodeHandle& node, const std::string& name, Check check, Execute execute)
       : check_(std::move(check)),
@@ -62,10 +65,23 @@ public:
   void setAborted(const Result& result, const std::string& text = "") { running().setAborted(result, text); }
   void setPreempted(const Result& result, const std::string& text = "") { running().setCanceled(result, text); }
 
+  /// Ends the running goal as actionlib means it: PREEMPTED with the best so far when a preemption was asked and the
+  /// work `ran` to an answer (stopped early, not failed); ABORTED when it failed; SUCCEEDED otherwise.
+  void finish(const Result& result, bool ran)
+  {
+    if (ran && isPreemptRequested())
+      setPreempted(result, "preempted: the best found so far");
+    else if (!result.success)
+      setAborted(result, result.message);
+    else
+      setSucceeded(result);
+  }
+
 private:
   void receive(GoalHandle goal)
   {
-    if (std::optional<Result> refusal = check_(*goal.getGoal()))
+    std::variant<Job, Result> verdict = check_(*goal.getGoal());
+    if (const Result* refusal = std::get_if<Result>(&verdict))
     {
       goal.setRejected(*refusal, "rejected: the goal cannot be carried out as it is (the result says why)");
       return;
@@ -73,8 +89,8 @@ private:
     {
       std::lock_guard<std::mutex> lock(mutex_);
       if (waiting_)
-        waiting_->setCanceled(Result(), "recalled: a newer goal replaced it");
-      waiting_ = goal;
+        waiting_->first.setCanceled(Result(), "recalled: a newer goal replaced it");
+      waiting_.emplace(goal, std::move(std::get<Job>(verdict)));
       preempt_ = running_.has_value();  // a newer goal preempts the running one
     }
     ready_.notify_all();
@@ -83,9 +99,9 @@ private:
   void cancel(GoalHandle goal)
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (waiting_ && *waiting_ == goal)
+    if (waiting_ && waiting_->first == goal)
     {
-      waiting_->setCanceled(Result(), "recalled before it ran");
+      waiting_->first.setCanceled(Result(), "recalled before it ran");
       waiting_.reset();
     }
     else if (running_ && *running_ == goal)
@@ -96,23 +112,22 @@ private:
   {
     for (;;)
     {
-      GoalHandle goal;
+      std::optional<std::pair<GoalHandle, Job>> next;
       {
         std::unique_lock<std::mutex> lock(mutex_);
         ready_.wait(lock, [this] { return shutdown_ || waiting_.has_value(); });
         if (shutdown_)
         {
           if (waiting_)
-            waiting_->setCanceled(Result(), "the server shut down");
+            waiting_->first.setCanceled(Result(), "the server shut down");
           return;
         }
-        goal = *waiting_;
-        waiting_.reset();
-        running_ = goal;
+        next.swap(waiting_);
+        running_ = next->first;
         preempt_ = false;
       }
-      goal.setAccepted("accepted");
-      execute_(goal.getGoal());
+      next->first.setAccepted("accepted");
+      execute_(next->first.getGoal(), next->second);
       std::lock_guard<std::mutex> lock(mutex_);
       running_.reset();
     }
@@ -128,7 +143,7 @@ private:
   Execute execute_;
   mutable std::mutex mutex_;  ///< guards the goals and the flags below against the callbacks and the worker
   std::condition_variable ready_;
-  std::optional<GoalHandle> waiting_;  ///< accepted by the check, not yet running
+  std::optional<std::pair<GoalHandle, Job>> waiting_;  ///< accepted by the check, not yet running
   std::optional<GoalHandle> running_;
   bool preempt_ = false;
   bool shutdown_ = false;

@@ -166,11 +166,15 @@ Expected<NodeSettings> readSettings(ParameterTree& parameters)
       !status)
     return status.error();
   auto planning = readPlanningSettings(parameters);
+  auto cockpit = readCockpitSettings(parameters);
   if (Status status = firstError({checkNodeSettings(s), namedAsParameter(validate(s.shot))}); !status)
     return status.error();
   if (!planning)
     return planning.error();
+  if (!cockpit)
+    return cockpit.error();
   s.planning = planning.value();
+  s.cockpit = cockpit.value();
   // Aside: ~tuning/ (dynamic_reconfigure's record of the tuned values) and ~diagnostic_period (diagnostic_updater's).
   if (Status status = parameters.checkEveryParameterWasRead({"tuning", "diagnostic_period"}); !status)
     return status.error();
@@ -202,7 +206,12 @@ SettingsDescription describeSettings(NodeSettings s)
     number(parameter.name, *parameter.value);
   number("planning/rollouts", s.planning.rollouts);
   number("planning/threads", s.planning.threads);
+  number("cockpit/rate", s.cockpit.rate);
+  number("cockpit/speed_scale", s.cockpit.speed_scale);
+  number("cockpit/slow_motion", s.cockpit.slow_motion);
   choice("target_frame", s.target_frame);
+  choice("cockpit/enabled", s.cockpit.enabled ? "true" : "false");
+  choice("cockpit/animate", s.cockpit.animate ? "true" : "false");
   choice("motion/planar", s.shot.motion.planar ? "true" : "false");
   choice("motion/rolling_model", ROLLING_MODELS.nameOf(s.shot.motion.rolling_model));
   choice("ball_ball/friction_model", BALL_BALL_FRICTION_MODELS.nameOf(s.shot.ball_contact.friction_model));

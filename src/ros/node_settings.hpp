@@ -8,6 +8,7 @@
 #include "billiard_shot_planner/calibration/shot_recorder.hpp"
 #include "billiard_shot_planner/core/expected.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
+#include "cockpit_settings.hpp"
 #include "parameter_tree.hpp"
 #include "planning_settings.hpp"
 
@@ -25,6 +26,7 @@ struct NodeSettings
   ShotConfiguration shot;
   PlanningSettings planning;
   RecorderLimits recording;  ///< ~calibration/track_duration, ~calibration/max_shots
+  CockpitSettings cockpit;
 };
 
 /// Reads every parameter (absent ones keep their defaults) and validates them. The error names the parameter: one of

@@ -120,7 +120,7 @@ ShotCalibrationServer::ShotCalibrationServer(ros::NodeHandle& private_node, Node
       recorder_(limits),
       action_server_(
           private_node, "fit_calibration", [this](const FitCalibrationGoal& goal) { return check(goal); },
-          [this](const FitCalibrationGoalConstPtr& goal) { execute(goal); })
+          [this](const FitCalibrationGoalConstPtr& goal, FitJob& job) { execute(goal, job); })
 {
   record_service_ = private_node.advertiseService("record_shot", &ShotCalibrationServer::recordShot, this);
   fit_service_ = private_node.advertiseService("fit_calibration_now", &ShotCalibrationServer::fitNow, this);
@@ -227,34 +227,28 @@ Expected<ShotCalibrationServer::FitJob> ShotCalibrationServer::prepare(const Fit
   return job;
 }
 
-FitCalibrationResult ShotCalibrationServer::fit(const FitCalibrationGoal& goal, const FitHooks& hooks)
+FitCalibrationResult ShotCalibrationServer::fit(FitJob& job, const FitHooks& hooks)
 {
   FitCalibrationResult result;
-  auto job = prepare(goal);
-  if (!job)
-  {
-    failWith(job.error(), "fit_calibration", result);
-    return result;
-  }
-  FitJob& j = job.value();
-  j.options.stop = hooks.stop;
-  j.options.progress = hooks.progress;
-  auto fitted = fitTracks(j.configuration, j.parameters, j.shots, j.position_noise, j.options);
+  job.options.stop = hooks.stop;
+  job.options.progress = hooks.progress;
+  auto fitted = fitTracks(job.configuration, job.parameters, job.shots, job.position_noise, job.options);
   if (!fitted)
   {
     failWith(inRequestTerms(fitted.error()), "fit_calibration", result);
     return result;
   }
-  fillAnswer(fitted.value(), j.shots.size(), result);
+  fillAnswer(fitted.value(), job.shots.size(), result);
   return result;
 }
 
-std::optional<FitCalibrationResult> ShotCalibrationServer::check(const FitCalibrationGoal& goal)
+std::variant<ShotCalibrationServer::FitJob, FitCalibrationResult> ShotCalibrationServer::check(
+    const FitCalibrationGoal& goal)
 {
   const ros::WallTime start = ros::WallTime::now();
-  const auto job = prepare(goal);
+  auto job = prepare(goal);
   if (job)
-    return std::nullopt;
+    return std::move(job.value());
   FitCalibrationResult refused;
   failWith(job.error(), "fit_calibration: rejected", refused);
   if (access_.record)
@@ -262,17 +256,7 @@ std::optional<FitCalibrationResult> ShotCalibrationServer::check(const FitCalibr
   return refused;
 }
 
-FitCalibrationResult ShotCalibrationServer::fitRecorded(const std::string& call, const FitCalibrationGoal& goal,
-                                                        const FitHooks& hooks)
-{
-  const ros::WallTime start = ros::WallTime::now();
-  FitCalibrationResult result = fit(goal, hooks);
-  if (access_.record)
-    access_.record(call, (ros::WallTime::now() - start).toSec(), result.error_code, result.message);
-  return result;
-}
-
-void ShotCalibrationServer::execute(const FitCalibrationGoalConstPtr& goal)
+void ShotCalibrationServer::execute(const FitCalibrationGoalConstPtr& /*goal*/, FitJob& job)
 {
   FitHooks hooks;
   ros::WallTime last_feedback;
@@ -292,18 +276,22 @@ void ShotCalibrationServer::execute(const FitCalibrationGoalConstPtr& goal)
     action_server_.publishFeedback(feedback);
   };
   hooks.stop = [this]() { return action_server_.isPreemptRequested() || !ros::ok(); };
-  const FitCalibrationResult result = fitRecorded("fit_calibration", *goal, hooks);
-  if (result.success && action_server_.isPreemptRequested())
-    action_server_.setPreempted(result, "preempted: the best fit so far");
-  else if (!result.success)
-    action_server_.setAborted(result, result.message);
-  else
-    action_server_.setSucceeded(result);
+  const FitCalibrationResult result = recordedCall(access_.record, "fit_calibration", [&] { return fit(job, hooks); });
+  action_server_.finish(result, result.success);
 }
 
 bool ShotCalibrationServer::fitNow(FitCalibrationNow::Request& request, FitCalibrationNow::Response& response)
 {
-  response.result = fitRecorded("fit_calibration_now", request.goal, FitHooks{});
+  response.result = recordedCall(access_.record, "fit_calibration_now",
+                                 [&]
+                                 {
+                                   auto job = prepare(request.goal);
+                                   if (job)
+                                     return fit(job.value(), FitHooks{});
+                                   FitCalibrationResult refused;
+                                   failWith(job.error(), "fit_calibration_now", refused);
+                                   return refused;
+                                 });
   return true;  // a goal that cannot be fitted is an answer, not a failed call
 }
 

@@ -11,12 +11,13 @@
 
 #include <functional>
 #include <mutex>
-#include <optional>
+#include <variant>
 #include <vector>
 
 #include "billiard_shot_planner/calibration/shot_recorder.hpp"
 #include "billiard_shot_planner/calibration/track_fit.hpp"
 #include "checked_action_server.hpp"
+#include "recorded_call.hpp"
 
 namespace billiard_shot_planner
 {
@@ -35,8 +36,8 @@ public:
     std::function<Expected<std::vector<TableBall>>(const TableState&, bool wait_for_tf)> place_table;
     /// The cue's tip and direction in the table frame; its ball is left for the caller to place.
     std::function<Expected<CuePlacement>(const geometry_msgs::PoseStamped&, double speed)> place_cue;
-    /// A call answered ("fit_calibration", its wall-clock seconds, its code and message), for the node's health.
-    std::function<void(const std::string&, double, const ErrorCode&, const std::string&)> record;
+    /// A call answered, for the node's health.
+    CallRecorder record;
   };
 
   ShotCalibrationServer(ros::NodeHandle& private_node, NodeAccess access, const RecorderLimits& limits, int threads);
@@ -61,15 +62,14 @@ private:
     FitOptions options;
     std::vector<ObservedShot> shots;
   };
+  /// The goal as a job (with a copy of the recorded shots), or why it cannot be fitted as it is (a bad field, no
+  /// recorded shot).
   Expected<FitJob> prepare(const FitCalibrationGoal& goal);
-  /// The result of a goal (success false with the reason when it cannot be fitted).
-  FitCalibrationResult fit(const FitCalibrationGoal& goal, const FitHooks& hooks);
-  /// fit(), timed and recorded as `call`.
-  FitCalibrationResult fitRecorded(const std::string& call, const FitCalibrationGoal& goal, const FitHooks& hooks);
-  /// A goal that cannot be fitted as it is (a bad field, no recorded shot): the result to reject it with; nothing
-  /// for a goal the fit takes.
-  std::optional<FitCalibrationResult> check(const FitCalibrationGoal& goal);
-  void execute(const FitCalibrationGoalConstPtr& goal);
+  /// The job fitted (success false with the reason when the fit fails).
+  FitCalibrationResult fit(FitJob& job, const FitHooks& hooks);
+  /// The action's check: the job, or the result to reject the goal with.
+  std::variant<FitJob, FitCalibrationResult> check(const FitCalibrationGoal& goal);
+  void execute(const FitCalibrationGoalConstPtr& goal, FitJob& job);
   bool fitNow(FitCalibrationNow::Request& request, FitCalibrationNow::Response& response);
   bool clearShots(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
   /// The shot as recorded: the cue placed at the cue ball of the table before the strike.
@@ -79,7 +79,7 @@ private:
   int threads_;
   std::mutex recorder_mutex_;  ///< guards recorder_ against the subscriber's and the services' threads
   ShotRecorder recorder_;
-  CheckedActionServer<FitCalibrationAction> action_server_;
+  CheckedActionServer<FitCalibrationAction, FitJob> action_server_;
   ros::ServiceServer record_service_;
   ros::ServiceServer fit_service_;
   ros::ServiceServer clear_service_;

@@ -48,21 +48,21 @@ ShotPlannerServer::ShotPlannerServer(ros::NodeHandle& private_node, NodeAccess a
       markers_(markers),
       action_server_(
           private_node, "plan_shot", [this](const PlanShotGoal& goal) { return check(goal); },
-          [this](const PlanShotGoalConstPtr& goal) { execute(goal); })
+          [this](const PlanShotGoalConstPtr& goal, PlanJob& job) { execute(goal, job); })
 {
   service_ = private_node.advertiseService("plan_shot_now", &ShotPlannerServer::planNow, this);
 }
 
-Expected<PlanRequest> ShotPlannerServer::planRequest(const PlanShotGoal& goal, PlanningSettings& settings,
-                                                     ShotConfiguration& configuration) const
+Expected<ShotPlannerServer::PlanJob> ShotPlannerServer::prepare(const PlanShotGoal& goal) const
 {
   if (goal.override_names.size() != goal.override_values.size())
     return invalidArgument("override_values", "must have one value per name in override_names");
+  PlanningSettings settings;
   auto configured = access_.configure(goal.override_names, goal.override_values, settings);
   if (!configured)
     return configured.error();
-  configuration = configured.value();
-  PlanRequest request;
+  PlanJob job{PlanRequest{}, configured.value()};
+  PlanRequest& request = job.request;
   if (Status status = readGoal(goal, settings, request); !status)
     return status.error();
   const auto table = access_.table(goal.table);
@@ -75,10 +75,10 @@ Expected<PlanRequest> ShotPlannerServer::planRequest(const PlanShotGoal& goal, P
     return balls.error();
   request.balls = balls.value();
   for (TableBall& ball : request.balls)
-    if (Status status = settleAtRest(ball, settings.rest_speed, configuration.ball_radius); !status)
+    if (Status status = settleAtRest(ball, settings.rest_speed, job.configuration.ball_radius); !status)
       return status.error();
   for (TableBall& ball : request.balls)
-    ball.state.position.z() = configuration.ball_radius;
+    ball.state.position.z() = job.configuration.ball_radius;
   if (goal.cue_region_radius > 0.0)
   {
     auto centre = access_.place_point(goal.cue_region_centre, "cue_region_centre");
@@ -86,32 +86,37 @@ Expected<PlanRequest> ShotPlannerServer::planRequest(const PlanShotGoal& goal, P
       return centre.error();
     request.cue_region = CueRegion{centre.value(), goal.cue_region_radius};
   }
-  return request;
+  if (Status status = validate(request, job.configuration); !status)
+    return status.error();
+  return job;
 }
 
-PlanShotResult ShotPlannerServer::plan(const PlanShotGoal& goal, const PlanHooks& hooks)
+PlanShotResult ShotPlannerServer::plan(PlanJob& job, const PlanHooks& hooks)
 {
-  PlanningSettings settings;
-  ShotConfiguration configuration;
-  auto request = planRequest(goal, settings, configuration);
-  if (!request)
-    return failure(request.error());
-  request.value().hooks = hooks;
-  auto plan = planShot(request.value(), configuration);
+  job.request.hooks = hooks;
+  auto plan = planShot(job.request, job.configuration);
   if (!plan)
     return failure(plan.error());
-  publishMarkers(plan.value(), configuration);
+  publishMarkers(plan.value(), job.configuration);
   return toResult(plan.value(), frame_, sample_spacing_, ros::Time::now());
 }
 
-PlanShotResult ShotPlannerServer::planRecorded(const std::string& call, const PlanShotGoal& goal,
-                                               const PlanHooks& hooks)
+PlanShotResult ShotPlannerServer::recorded(const std::string& call, const std::function<PlanShotResult()>& work)
 {
-  const ros::WallTime start = ros::WallTime::now();
-  PlanShotResult result = plan(goal, hooks);
-  if (access_.record)
-    access_.record(call, (ros::WallTime::now() - start).toSec(), result.error_code, result.message);
+  PlanShotResult result = recordedCall(access_.record, call, work);
+  if (result.success && access_.show)
+    access_.show(result.prediction);
   return result;
+}
+
+PlanShotResult ShotPlannerServer::answer(const std::string& call, const PlanShotGoal& goal)
+{
+  return recorded(call,
+                  [&]
+                  {
+                    auto job = prepare(goal);
+                    return job ? plan(job.value(), PlanHooks{}) : failure(job.error());
+                  });
 }
 
 void ShotPlannerServer::publishMarkers(const ShotPlan& plan, const ShotConfiguration& configuration)
@@ -123,23 +128,20 @@ void ShotPlannerServer::publishMarkers(const ShotPlan& plan, const ShotConfigura
   markers_.publish(markers);
 }
 
-std::optional<PlanShotResult> ShotPlannerServer::check(const PlanShotGoal& goal) const
+std::variant<ShotPlannerServer::PlanJob, PlanShotResult> ShotPlannerServer::check(const PlanShotGoal& goal) const
 {
   const ros::WallTime start = ros::WallTime::now();
-  PlanningSettings settings;
-  ShotConfiguration configuration;
-  const auto request = planRequest(goal, settings, configuration);
-  const Status valid = request ? validate(request.value(), configuration) : Status(request.error());
-  if (valid)
-    return std::nullopt;
-  PlanShotResult refused = failure(valid.error());
+  auto job = prepare(goal);
+  if (job)
+    return std::move(job.value());
+  PlanShotResult refused = failure(job.error());
   ROS_WARN("plan_shot: rejected: %s", refused.message.c_str());
   if (access_.record)
     access_.record("plan_shot", (ros::WallTime::now() - start).toSec(), refused.error_code, refused.message);
   return refused;
 }
 
-void ShotPlannerServer::execute(const PlanShotGoalConstPtr& goal)
+void ShotPlannerServer::execute(const PlanShotGoalConstPtr& /*goal*/, PlanJob& job)
 {
   PlanHooks hooks;
   hooks.progress = [this](const PlanProgress& progress)
@@ -151,23 +153,16 @@ void ShotPlannerServer::execute(const PlanShotGoalConstPtr& goal)
     action_server_.publishFeedback(feedback);
   };
   hooks.stop = [this]() { return action_server_.isPreemptRequested() || !ros::ok(); };
-  const PlanShotResult result = planRecorded("plan_shot", *goal, hooks);
-  // A valid goal that was stopped ends preempted with the best so far, whether or not it pots.
-  const bool planned = result.success || result.error_code.val == ErrorCode::NO_SHOT_FOUND;
-  if (planned && action_server_.isPreemptRequested())
-    action_server_.setPreempted(result, "preempted: the best plan found so far");
-  else if (!result.success)
-  {
+  const PlanShotResult result = recorded("plan_shot", [&] { return plan(job, hooks); });
+  if (!result.success)
     ROS_WARN("plan_shot: %s", result.message.c_str());
-    action_server_.setAborted(result, result.message);
-  }
-  else
-    action_server_.setSucceeded(result);
+  // A valid goal that was stopped ends preempted with the best so far, whether or not it pots.
+  action_server_.finish(result, result.success || result.error_code.val == ErrorCode::NO_SHOT_FOUND);
 }
 
 bool ShotPlannerServer::planNow(PlanShotNow::Request& request, PlanShotNow::Response& response)
 {
-  response.result = planRecorded("plan_shot_now", request.goal, PlanHooks{});
+  response.result = answer("plan_shot_now", request.goal);
   if (!response.result.success)
     ROS_WARN("plan_shot_now: %s", response.result.message.c_str());
   return true;  // a goal that cannot be planned is an answer, not a failed call

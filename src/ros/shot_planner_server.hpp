@@ -9,13 +9,14 @@
 
 #include <functional>
 #include <memory>
-#include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "billiard_shot_planner/planning/shot_planner.hpp"
 #include "checked_action_server.hpp"
 #include "planning_settings.hpp"
+#include "recorded_call.hpp"
 
 namespace billiard_shot_planner
 {
@@ -38,32 +39,42 @@ public:
     std::function<Expected<std::vector<TableBall>>(const TableState&)> place_table;
     /// A point in the table frame.
     std::function<Expected<Eigen::Vector2d>(const geometry_msgs::PointStamped&, const std::string&)> place_point;
-    /// A call answered ("plan_shot", its wall-clock seconds, its code and message), for the node's health.
-    std::function<void(const std::string&, double, const ErrorCode&, const std::string&)> record;
+    /// A call answered, for the node's health.
+    CallRecorder record;
+    /// A plan's noise-free prediction, to be watched (the node's animation); may be empty.
+    std::function<void(const ShotPrediction&)> show;
   };
 
   ShotPlannerServer(ros::NodeHandle& private_node, NodeAccess access, std::string frame, double sample_spacing,
                     const ros::Publisher& markers);
 
+  /// A goal planned at once, as ~plan_shot_now answers it, recorded as `call` (the cockpit's click-to-plan too).
+  PlanShotResult answer(const std::string& call, const PlanShotGoal& goal);
+
 private:
-  /// A goal that cannot be planned as it is (a bad field, a frame tf does not know, a moving table): the result to
-  /// reject it with; nothing for a goal the planner takes.
-  std::optional<PlanShotResult> check(const PlanShotGoal& goal) const;
-  void execute(const PlanShotGoalConstPtr& goal);
+  /// A goal read, placed and validated: what the planner is asked, in the configuration of the moment.
+  struct PlanJob
+  {
+    PlanRequest request;
+    ShotConfiguration configuration;
+  };
+  /// The goal as a job, or why it cannot be planned as it is (a bad field, a frame tf does not know, a moving table).
+  Expected<PlanJob> prepare(const PlanShotGoal& goal) const;
+  /// The action's check: the job, or the result to reject the goal with.
+  std::variant<PlanJob, PlanShotResult> check(const PlanShotGoal& goal) const;
+  void execute(const PlanShotGoalConstPtr& goal, PlanJob& job);
   bool planNow(PlanShotNow::Request& request, PlanShotNow::Response& response);
-  /// The result of a goal (success false with the reason when it cannot be planned).
-  PlanShotResult plan(const PlanShotGoal& goal, const PlanHooks& hooks);
-  /// plan(), timed and recorded as `call`.
-  PlanShotResult planRecorded(const std::string& call, const PlanShotGoal& goal, const PlanHooks& hooks);
-  Expected<PlanRequest> planRequest(const PlanShotGoal& goal, PlanningSettings& settings,
-                                    ShotConfiguration& configuration) const;
+  /// The job planned (success false with the reason when the planner fails); its markers drawn.
+  PlanShotResult plan(PlanJob& job, const PlanHooks& hooks);
+  /// work()'s result recorded as `call`, its prediction shown when it succeeded.
+  PlanShotResult recorded(const std::string& call, const std::function<PlanShotResult()>& work);
   void publishMarkers(const ShotPlan& plan, const ShotConfiguration& configuration);
 
   NodeAccess access_;
   std::string frame_;
   double sample_spacing_;
   ros::Publisher markers_;
-  CheckedActionServer<PlanShotAction> action_server_;
+  CheckedActionServer<PlanShotAction, PlanJob> action_server_;
   ros::ServiceServer service_;
 };
 

@@ -182,8 +182,21 @@ ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& pri
   configuration_service_ =
       private_node.advertiseService("get_configuration", &ShotPredictorNode::describeConfiguration, this);
   diagnostics_timer_ = node.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { diagnostics_.update(); });
+  if (settings_.cockpit.enabled)
+    animator_ = std::make_unique<ShotAnimator>(private_node, settings_.cockpit,
+                                               [this]
+                                               {
+                                                 std::lock_guard<std::mutex> lock(configuration_mutex_);
+                                                 return settings_.shot.ball_radius;
+                                               });
   planner_ = std::make_unique<ShotPlannerServer>(private_node, plannerAccess(), settings_.target_frame,
                                                  settings_.sample_spacing, marker_publisher_);
+  if (settings_.cockpit.enabled)
+  {
+    const Eigen::Vector2d head_spot(-0.25 * settings_.shot.table.length, 0.0);
+    cockpit_ = std::make_unique<CueCockpit>(node, private_node, cockpitAccess(), settings_.cockpit,
+                                            settings_.target_frame, head_spot);
+  }
   ROS_INFO("predict_shot ready: answers in frame '%s'", settings_.target_frame.c_str());
 }
 
@@ -265,7 +278,57 @@ ShotPlannerServer::NodeAccess ShotPredictorNode::plannerAccess()
   { return placePoint(point, field); };
   access.record = [this](const std::string& call, double seconds, const ErrorCode& code, const std::string& message)
   { health_.recordCall(call, seconds, code.val, message, ros::Time::now()); };
+  access.show = [this](const ShotPrediction& prediction)
+  {
+    if (animator_)
+      animator_->show(prediction);
+  };
   return access;
+}
+
+CueCockpit::NodeAccess ShotPredictorNode::cockpitAccess()
+{
+  CueCockpit::NodeAccess access;
+  access.predict = [this](PredictShot::Request& request, PredictShot::Response& response)
+  { predictRecorded("cue_control", request, response); };
+  access.plan = [this](const PlanShotGoal& goal) { return planner_->answer("clicked_point", goal); };
+  access.scene = [this] { return cockpitScene(); };
+  access.place_point = [this](const geometry_msgs::PointStamped& point, const std::string& field)
+  { return placePoint(point, field); };
+  access.ball_radius = [this]
+  {
+    std::lock_guard<std::mutex> lock(configuration_mutex_);
+    return settings_.shot.ball_radius;
+  };
+  return access;
+}
+
+void ShotPredictorNode::setScene(const TableState& table, const std::optional<Eigen::Vector2d>& cue_ball)
+{
+  std::lock_guard<std::mutex> lock(table_mutex_);
+  scene_table_ = table;
+  scene_cue_ball_ = cue_ball;
+}
+
+std::vector<TableBall> ShotPredictorNode::cockpitScene() const
+{
+  TableState table;
+  std::optional<Eigen::Vector2d> cue_ball;
+  {
+    std::lock_guard<std::mutex> lock(table_mutex_);
+    table = scene_table_;
+    cue_ball = scene_cue_ball_;
+  }
+  auto balls = checkTable(table) ? placeTable(table, 0.0) : Expected<std::vector<TableBall>>(std::vector<TableBall>{});
+  if (!balls)
+    return {};  // tf cannot place it yet: the cockpit keeps its cue where it is
+  if (cue_ball && !hasCueBall(table))
+  {
+    TableBall ball{CUE_BALL_ID, {}};
+    ball.state.position = Eigen::Vector3d(cue_ball->x(), cue_ball->y(), 0.0);
+    balls.value().push_back(ball);
+  }
+  return balls.value();
 }
 
 ShotCalibrationServer::NodeAccess ShotPredictorNode::calibrationAccess()
@@ -301,6 +364,7 @@ void ShotPredictorNode::storeTable(const TableState::ConstPtr& table)
     latest_table_ = *table;
     latest_table_received_ = ros::Time::now();
   }
+  setScene(*table, std::nullopt);
 }
 
 void ShotPredictorNode::observeSighting(const TableState::ConstPtr& table)
@@ -385,12 +449,18 @@ Expected<CuePlacement> ShotPredictorNode::placeCue(const PredictShot::Request& r
   return cue;
 }
 
-bool ShotPredictorNode::predict(PredictShot::Request& request, PredictShot::Response& response)
+void ShotPredictorNode::predictRecorded(const std::string& call, PredictShot::Request& request,
+                                        PredictShot::Response& response)
 {
   const ros::WallTime start = ros::WallTime::now();
   answer(request, response);
-  health_.recordCall("predict_shot", (ros::WallTime::now() - start).toSec(), response.error_code.val, response.message,
+  health_.recordCall(call, (ros::WallTime::now() - start).toSec(), response.error_code.val, response.message,
                      ros::Time::now());
+}
+
+bool ShotPredictorNode::predict(PredictShot::Request& request, PredictShot::Response& response)
+{
+  predictRecorded("predict_shot", request, response);
   return true;  // a domain error is an answer, not a failed call
 }
 
@@ -475,6 +545,9 @@ bool ShotPredictorNode::answer(PredictShot::Request& request, PredictShot::Respo
   prediction_publisher_.publish(response.prediction);
   marker_publisher_.publish(
       trajectoryMarkers(outcome.value(), configuration.value(), settings_.target_frame, settings_.sample_spacing));
+  setScene(table, hasCueBall(table) ? std::nullopt : std::optional<Eigen::Vector2d>(cue.value().ball));
+  if (animator_)
+    animator_->show(response.prediction);
   return true;
 }
 

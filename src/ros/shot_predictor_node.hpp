@@ -17,9 +17,12 @@
 
 #include <memory>
 #include <mutex>
+#include <optional>
 
+#include "cue_cockpit.hpp"
 #include "node_health.hpp"
 #include "node_settings.hpp"
+#include "shot_animator.hpp"
 #include "shot_calibration_server.hpp"
 #include "shot_planner_server.hpp"
 
@@ -41,7 +44,8 @@ public:
   int threads() const { return settings_.threads; }
 
 private:
-  /// answer(), timed and recorded for /diagnostics.
+  /// answer(), timed and recorded for /diagnostics as `call`.
+  void predictRecorded(const std::string& call, PredictShot::Request& request, PredictShot::Response& response);
   bool predict(PredictShot::Request& request, PredictShot::Response& response);
   bool answer(PredictShot::Request& request, PredictShot::Response& response);
   bool describeConfiguration(GetConfiguration::Request& request, GetConfiguration::Response& response);
@@ -66,6 +70,12 @@ private:
   Expected<Eigen::Vector2d> placePoint(const geometry_msgs::PointStamped& point, const std::string& field) const;
   ShotPlannerServer::NodeAccess plannerAccess();
   ShotCalibrationServer::NodeAccess calibrationAccess();
+  CueCockpit::NodeAccess cockpitAccess();
+  /// The cockpit's scene in the table frame: the balls of the last prediction or of the latest ~table_state,
+  /// whichever came last (placed with the transforms tf has now), with the last prediction's cue ball.
+  std::vector<TableBall> cockpitScene() const;
+  /// The scene becomes `table`, with the cue ball at `cue_ball` when the table has none.
+  void setScene(const TableState& table, const std::optional<Eigen::Vector2d>& cue_ball);
   /// A change through ~tuning: applied whole, or rejected whole with `tuning` reset to the node's configuration and
   /// the reason in tuning.rejected (the server answers the client with it).
   void retune(ShotPredictorConfig& tuning, uint32_t level);
@@ -92,9 +102,15 @@ private:
   std::unique_ptr<tf2_ros::MessageFilter<TableState>> sightings_;
   mutable std::mutex table_mutex_;  ///< guards latest_table_ against the subscriber's callback
   TableState latest_table_;
-  ros::Time latest_table_received_;  ///< when latest_table_ arrived
+  ros::Time latest_table_received_;                ///< when latest_table_ arrived
+  TableState scene_table_;                         ///< cockpitScene()'s, guarded by table_mutex_
+  std::optional<Eigen::Vector2d> scene_cue_ball_;  ///< guarded by table_mutex_
+  /// Declared before the servers that show their predictions to it, the cockpit after those it calls: each is
+  /// destroyed before what it uses.
+  std::unique_ptr<ShotAnimator> animator_;
   std::unique_ptr<ShotPlannerServer> planner_;
   std::unique_ptr<ShotCalibrationServer> calibration_;
+  std::unique_ptr<CueCockpit> cockpit_;
 };
 
 }  // namespace billiard_shot_planner

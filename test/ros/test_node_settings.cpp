@@ -186,9 +186,10 @@ XmlRpc::XmlRpcValue asParameters(const bsp::SettingsDescription& description)
   {
     const std::string& name = description.choice_names[i];
     const std::string& value = description.choice_values[i];
-    at(name) = name == "table/pockets"   ? toParameters(YAML::Load(value))
-               : name == "motion/planar" ? XmlRpc::XmlRpcValue(value == "true")
-                                         : XmlRpc::XmlRpcValue(value);
+    const bool boolean = value == "true" || value == "false";  // no string parameter of the node takes these
+    at(name) = name == "table/pockets" ? toParameters(YAML::Load(value))
+               : boolean               ? XmlRpc::XmlRpcValue(value == "true")
+                                       : XmlRpc::XmlRpcValue(value);
   }
   return parameters;
 }
@@ -207,6 +208,8 @@ TEST(NodeSettings, TheDescriptionOfTheSettingsReadsBackToTheSameSettings)
   parameters["table"]["cushion"]["law"]["yield_speed"] = 0.7;
   parameters["table"]["pockets"][0][0] = -1.2345678901234567;
   parameters["planning"]["rollouts"] = 321;
+  parameters["cockpit"]["animate"] = false;
+  parameters["cockpit"]["slow_motion"] = 2.5;
   bsp::ParameterTree tree(parameters);
   const auto settings = bsp::readSettings(tree);
   ASSERT_TRUE(settings.ok()) << settings.error().describe();
