@@ -1,12 +1,12 @@
 # Checks the layering of the sources under SOURCE_DIR (include/billiard_shot_planner/<layer>/ and src/<layer>/):
-#   core → impact → scenarios → motion → shot → planning, calibration → io → ros, cli
+#   core → impact → scenarios → motion → shot → planning, calibration → io → ros, cli, python
 # A file may include its own layer's headers and the public headers of the layers below it; never a higher
 # layer's, never another layer's private header (src/<other>/…), and the ROS-free layers (core … shot, io, cli)
 # no ROS header; the physics layers (core … planning, calibration) no file-format library either.
 # Usage: cmake -DSOURCE_DIR=<package root> -P check_layers.cmake   (fails with a list of the violations)
 cmake_minimum_required(VERSION 3.16)
 
-set(LAYERS core impact scenarios motion shot planning calibration io ros cli)
+set(LAYERS core impact scenarios motion shot planning calibration io ros cli python)
 set(RANK_core 0)
 set(RANK_impact 1)
 set(RANK_scenarios 2)
@@ -17,6 +17,7 @@ set(RANK_calibration 5)
 set(RANK_io 6)
 set(RANK_ros 7)
 set(RANK_cli 7)
+set(RANK_python 7)
 set(ROS_HEADERS "^(ros|tf2|tf2_ros|tf2_geometry_msgs|geometry_msgs|std_msgs|visualization_msgs|dynamic_reconfigure|billiard_shot_planner/[A-Za-z]+\\.h)[/>.]")
 set(FORMAT_HEADERS "^(nlohmann|yaml-cpp)/")
 

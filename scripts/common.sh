@@ -23,11 +23,12 @@ DEMO_PACKAGES=(
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
   libdiagnostic-updater-dev python3-diagnostic-msgs
   libeigen3-dev libboost-dev nlohmann-json3-dev libyaml-cpp-dev libnlopt-cxx-dev libceres-dev
+  pybind11-dev python3-numpy
   rviz xvfb xauth libgl1-mesa-dri imagemagick
 )
 TEST_PACKAGES=(
   librostest-dev python3-rostest python3-rosbag python3-tf2-ros python3-visualization-msgs
-  libgtest-dev libbenchmark-dev python3-pil
+  libgtest-dev libbenchmark-dev python3-pil python3-pytest python3-yaml
   clang-format clang-tidy catkin-lint
   clang libclang-rt-14-dev
 )

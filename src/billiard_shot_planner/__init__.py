@@ -1,0 +1,49 @@
+"""billiard_shot_planner: shots of billiards by the integrated multiple-impact model of Jia, Mason and Erdmann.
+
+The ROS-free core from Python (docs/python.md)::
+
+    import billiard_shot_planner as bsp
+    shot = bsp.predict_shot(bsp.Stroke(phi=0.0, speed=2.0), cue_ball=(-0.6, 0.0), balls={"one": (0.3, 0.05)})
+    shot.strike.velocity, shot.ball("one").outcome
+
+Table frame: origin at the centre of the cloth, x along the length, z up; SI units; strokes in this package's
+convention (from_pooltool / from_fastfiz convert the others'). Errors raise billiard_shot_planner.Error, a ValueError
+with `code` and `field`. With ROS, the package also holds the node's messages (billiard_shot_planner.msg, .srv).
+"""
+from ._core import (
+    PHASES,
+    BallPath,
+    Configuration,
+    Cue,
+    Error,
+    Event,
+    Shot,
+    Strike,
+    Stroke,
+    from_fastfiz,
+    from_pooltool,
+    predict_shot,
+    simulate_many,
+    strike,
+    to_fastfiz,
+    to_pooltool,
+)
+
+__all__ = [
+    "PHASES",
+    "BallPath",
+    "Configuration",
+    "Cue",
+    "Error",
+    "Event",
+    "Shot",
+    "Strike",
+    "Stroke",
+    "from_fastfiz",
+    "from_pooltool",
+    "predict_shot",
+    "simulate_many",
+    "strike",
+    "to_fastfiz",
+    "to_pooltool",
+]

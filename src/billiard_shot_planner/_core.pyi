@@ -1,0 +1,106 @@
+# Type stubs of the compiled core (src/python/), for editors and type checkers.
+from typing import Any, Mapping, Optional, Sequence, Tuple
+
+import numpy as np
+import numpy.typing as npt
+
+PHASES: Tuple[str, str, str, str, str]
+
+class Error(ValueError):
+    """A call refused its input or could not finish."""
+
+    code: str
+    field: str
+
+class Configuration:
+    """The shot's physics by the ROS node's parameter names; the node's defaults."""
+
+    def __init__(self) -> None: ...
+    def __getitem__(self, name: str) -> float: ...
+    def __setitem__(self, name: str, value: float) -> None: ...
+    def __contains__(self, name: str) -> bool: ...
+    def names(self) -> list[str]: ...
+    def copy(self) -> Configuration: ...
+
+class Stroke:
+    """phi, theta in rad; speed in m/s; a (+ right) and b (+ up) in ball radii."""
+
+    phi: float
+    theta: float
+    speed: float
+    a: float
+    b: float
+    def __init__(
+        self, phi: float = 0.0, theta: float = 0.0, speed: float = 1.0, a: float = 0.0, b: float = 0.0
+    ) -> None: ...
+
+class Cue:
+    """The cue's pose at the ball (tip, direction of motion) and its speed, table frame."""
+
+    tip: npt.NDArray[np.float64]
+    direction: npt.NDArray[np.float64]
+    speed: float
+    def __init__(self, tip: Sequence[float], direction: Sequence[float], speed: float) -> None: ...
+
+class Strike:
+    velocity: npt.NDArray[np.float64]
+    angular_velocity: npt.NDArray[np.float64]
+    cue_velocity: float
+    hit_normal: npt.NDArray[np.float64]
+    cue_direction: npt.NDArray[np.float64]
+    states: list[str]
+    miscue: bool
+    leaves_cloth: bool
+
+class Event:
+    type: str
+    time: float
+    position: npt.NDArray[np.float64]
+    velocity: npt.NDArray[np.float64]
+    angular_velocity: npt.NDArray[np.float64]
+    cushion: int
+    pocket: int
+    ball: int
+
+class BallPath:
+    id: str
+    outcome: str
+    pocket: int
+    final_position: npt.NDArray[np.float64]
+    duration: float
+    events: list[Event]
+    def position_at(self, time: float) -> npt.NDArray[np.float64]: ...
+    def sample(
+        self, spacing: float = 0.01
+    ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.int32]]: ...
+
+class Shot:
+    strike: Strike
+    hit_point: npt.NDArray[np.float64]
+    balls: list[BallPath]
+    first_contact: str
+    def ball(self, id: str) -> BallPath: ...
+
+def strike(
+    stroke: Stroke | Cue,
+    cue_ball: Sequence[float] = (0.0, 0.0),
+    balls: Optional[Mapping[str, Sequence[float]]] = None,
+    configuration: Configuration = ...,
+) -> Strike: ...
+def predict_shot(
+    stroke: Stroke | Cue,
+    cue_ball: Sequence[float],
+    balls: Optional[Mapping[str, Sequence[float]]] = None,
+    configuration: Configuration = ...,
+) -> Shot: ...
+def from_pooltool(V0: float, phi: float, theta: float = 0.0, a: float = 0.0, b: float = 0.0) -> Stroke: ...
+def to_pooltool(stroke: Stroke) -> Tuple[float, float, float, float, float]: ...
+def from_fastfiz(a: float, b: float, theta: float, phi: float, v: float, ball_radius: float = 0.028575) -> Stroke: ...
+def to_fastfiz(stroke: Stroke, ball_radius: float = 0.028575) -> Tuple[float, float, float, float, float]: ...
+def simulate_many(
+    strokes: npt.ArrayLike,
+    cue_ball: Sequence[float],
+    balls: Optional[Mapping[str, Sequence[float]]] = None,
+    configuration: Configuration = ...,
+    threads: int = 0,
+) -> dict[str, Any]: ...

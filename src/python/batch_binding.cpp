@@ -1,0 +1,196 @@
+#include "batch_binding.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <thread>
+
+#include "billiard_shot_planner/planning/stroke.hpp"
+#include "billiard_shot_planner/shot/shot_prediction.hpp"
+#include "layout.hpp"
+#include "python_errors.hpp"
+
+namespace billiard_shot_planner::python
+{
+namespace py = pybind11;
+
+namespace
+{
+constexpr std::size_t MAX_BATCH = 10'000'000;
+constexpr int MAX_THREADS = 256;
+
+/// The strokes of a batch: an (N, 5) array of phi, theta, speed, a, b (this package's convention).
+std::vector<Stroke> strokesOf(const py::handle& given)
+{
+  py::array_t<double, py::array::c_style | py::array::forcecast> array;
+  try
+  {
+    array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(given);
+  }
+  catch (const py::error_already_set&)
+  {
+    array = {};
+  }
+  if (!array || array.ndim() != 2 || array.shape(1) != 5)
+    raise(invalidArgument("strokes", "must be an (N, 5) array of phi, theta, speed, a, b"));
+  if (static_cast<std::size_t>(array.shape(0)) > MAX_BATCH)
+    raise(invalidArgument("strokes", "at most " + std::to_string(MAX_BATCH) + " rows"));
+  const auto rows = array.unchecked<2>();
+  std::vector<Stroke> strokes;
+  strokes.reserve(static_cast<std::size_t>(rows.shape(0)));
+  for (py::ssize_t i = 0; i < rows.shape(0); ++i)
+    strokes.push_back({rows(i, 0), rows(i, 1), rows(i, 2), rows(i, 3), rows(i, 4)});
+  return strokes;
+}
+
+int threadCount(int threads, std::size_t rows)
+{
+  if (threads < 0 || threads > MAX_THREADS)
+    raise(invalidArgument("threads", "must be in [0, " + std::to_string(MAX_THREADS) + "] (0: one per core)"));
+  const int cores = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(cores), std::max<std::size_t>(rows, 1)));
+}
+
+/// work(i) for every row i on `threads` threads, rows handed out one at a time (shots differ much in cost).
+template <class Work>
+void forEachRow(std::size_t rows, int threads, const Work& work)
+{
+  std::atomic<std::size_t> next{0};
+  auto run = [&]
+  {
+    for (std::size_t i = next++; i < rows; i = next++)
+      work(i);
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t)
+    pool.emplace_back(run);
+  run();
+  for (std::thread& thread : pool)
+    thread.join();
+}
+
+/// A row's answer: the cue ball after the strike and every ball's end, or the row's error.
+struct RowOutcome
+{
+  std::optional<Error> error;
+  Eigen::Vector3d velocity = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  std::vector<Eigen::Vector3d> final_positions;
+  std::vector<int> pockets;
+};
+
+RowOutcome simulateRow(const Stroke& stroke, const Layout& layout, const ShotConfiguration& configuration)
+{
+  RowOutcome row;
+  auto cue = placeStroke(stroke, layout.cue_ball, configuration.ball_radius);
+  if (!cue)
+  {
+    row.error = cue.error();
+    return row;
+  }
+  auto shot = predictShot(cue.value(), configuration, layout.balls);
+  if (!shot)
+  {
+    row.error = shot.error();
+    return row;
+  }
+  row.velocity = shot.value().strike.velocity;
+  row.angular_velocity = shot.value().strike.angular_velocity;
+  for (const BallTrajectory& ball : shot.value().table.balls)
+  {
+    row.final_positions.push_back(ball.finalState().position);
+    int pocket = -1;
+    for (const MotionEvent& e : ball.events)
+      if (e.type == MotionEventType::Pocketed)
+        pocket = e.pocket;
+    row.pockets.push_back(pocket);
+  }
+  return row;
+}
+
+py::object errorsOf(const std::vector<RowOutcome>& rows)
+{
+  py::list errors;
+  py::object type = py::module_::import("billiard_shot_planner._core").attr("Error");
+  for (const RowOutcome& row : rows)
+  {
+    if (!row.error)
+    {
+      errors.append(py::none());
+      continue;
+    }
+    py::object error = type(row.error->describe());
+    error.attr("code") = toString(row.error->code);
+    error.attr("field") = row.error->field;
+    errors.append(error);
+  }
+  return std::move(errors);
+}
+
+py::dict simulateMany(const py::handle& strokes_given, const py::handle& cue_ball, const py::object& balls,
+                      const ShotConfiguration& configuration, int threads)
+{
+  const std::vector<Stroke> strokes = strokesOf(strokes_given);
+  const Layout layout = layoutOf(cue_ball, balls);
+  const int workers = threadCount(threads, strokes.size());
+  std::vector<RowOutcome> rows(strokes.size());
+  {
+    py::gil_scoped_release release;
+    forEachRow(strokes.size(), workers,
+               [&](std::size_t i) { rows[i] = simulateRow(strokes[i], layout, configuration); });
+  }
+  const auto n = static_cast<py::ssize_t>(rows.size());
+  const auto b = static_cast<py::ssize_t>(layout.balls.size() + 1);
+  py::array_t<double> velocity({n, py::ssize_t{3}});
+  py::array_t<double> angular_velocity({n, py::ssize_t{3}});
+  py::array_t<double> final_position({n, b, py::ssize_t{3}});
+  py::array_t<int> pocket({n, b});
+  auto v = velocity.mutable_unchecked<2>();
+  auto w = angular_velocity.mutable_unchecked<2>();
+  auto f = final_position.mutable_unchecked<3>();
+  auto p = pocket.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < n; ++i)
+  {
+    const RowOutcome& row = rows[static_cast<std::size_t>(i)];
+    for (py::ssize_t j = 0; j < 3; ++j)
+    {
+      v(i, j) = row.velocity(j);
+      w(i, j) = row.angular_velocity(j);
+    }
+    for (py::ssize_t k = 0; k < b; ++k)
+    {
+      const bool known = !row.error && static_cast<std::size_t>(k) < row.final_positions.size();
+      for (py::ssize_t j = 0; j < 3; ++j)
+        f(i, k, j) =
+            known ? row.final_positions[static_cast<std::size_t>(k)](j) : std::numeric_limits<double>::quiet_NaN();
+      p(i, k) = known ? row.pockets[static_cast<std::size_t>(k)] : -1;
+    }
+  }
+  py::dict answer;
+  answer["ids"] = layout.ids();
+  answer["velocity"] = velocity;
+  answer["angular_velocity"] = angular_velocity;
+  answer["final_position"] = final_position;
+  answer["pocket"] = pocket;
+  answer["error"] = errorsOf(rows);
+  return answer;
+}
+}  // namespace
+
+void bindBatches(py::module_& module)
+{
+  module.def("simulate_many", &simulateMany, py::arg("strokes"), py::arg("cue_ball"), py::arg("balls") = py::none(),
+             py::arg("configuration") = ShotConfiguration{}, py::arg("threads") = 0,
+             R"(Many strokes on one layout: predict_shot for each row of `strokes` (an (N, 5) array of phi, theta,
+speed, a, b), on `threads` threads (0: one per core) with the GIL released. Returns a dict of numpy arrays: ids (the
+balls' order, the cue ball first), velocity and angular_velocity (N, 3) of the cue ball after the strike,
+final_position (N, B, 3) and pocket (N, B; -1: not pocketed) of every ball, and error (N: None, or the row's Error;
+its row's numbers are NaN and -1). A bad array, layout or thread count raises Error.)");
+}
+
+}  // namespace billiard_shot_planner::python

@@ -1,0 +1,41 @@
+#include "python_errors.hpp"
+
+#include <algorithm>
+
+namespace billiard_shot_planner::python
+{
+namespace py = pybind11;
+
+void registerErrors(py::module_& module)
+{
+  py::object error = py::reinterpret_steal<py::object>(PyErr_NewExceptionWithDoc(
+      "billiard_shot_planner._core.Error",
+      "A call refused its input or could not finish. `code` names the kind (invalid_argument, "
+      "invalid_shot, time_limit_exceeded, ...), `field` the input at fault (may be empty).",
+      PyExc_ValueError, nullptr));
+  module.attr("Error") = error;
+}
+
+void raise(const Error& error)
+{
+  py::object type = py::module_::import("billiard_shot_planner._core").attr("Error");
+  py::object exception = type(error.describe());
+  exception.attr("code") = toString(error.code);
+  exception.attr("field") = error.field;
+  PyErr_SetObject(type.ptr(), exception.ptr());
+  throw py::error_already_set();
+}
+
+void check(const Status& status)
+{
+  if (!status)
+    raise(status.error());
+}
+
+std::string parameterName(std::string path)
+{
+  std::replace(path.begin(), path.end(), '.', '/');
+  return path;
+}
+
+}  // namespace billiard_shot_planner::python
