@@ -11,6 +11,7 @@ add_library(${PROJECT_NAME}_python MODULE
   src/python/configuration_binding.cpp
   src/python/layout.cpp
   src/python/module.cpp
+  src/python/plan_binding.cpp
   src/python/python_errors.cpp
   src/python/shot_binding.cpp
 )

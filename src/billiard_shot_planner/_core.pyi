@@ -104,3 +104,65 @@ def simulate_many(
     configuration: Configuration = ...,
     threads: int = 0,
 ) -> dict[str, Any]: ...
+
+class Noise:
+    """Execution noise: one standard deviation per stroke parameter (rad, rad, m/s, m, m)."""
+
+    phi: float
+    theta: float
+    speed: float
+    a: float
+    b: float
+    def __init__(self) -> None: ...
+
+class Limits:
+    """What the robot can do (rad, m/s, ball radii, m)."""
+
+    min_theta: float
+    max_theta: float
+    min_speed: float
+    max_speed: float
+    max_offset: float
+    cue_length: float
+    cue_radius: float
+    rail_height: float
+    def __init__(self) -> None: ...
+
+class PlannedShot:
+    stroke: Stroke
+    cue: Cue
+    target: str
+    pocket: int
+    bank_cushion: int
+    cue_ball_path: str
+    margin: float
+    success_probability: float
+    confidence: Tuple[float, float]
+    rollouts: int
+    target_end_points: npt.NDArray[np.float64]
+
+class Plan:
+    found: bool
+    best: PlannedShot
+    explanation: str
+    shot: Shot
+    alternatives: list[PlannedShot]
+    evaluations: int
+    seconds: float
+
+def plan_shot(
+    cue_ball: Sequence[float],
+    balls: Mapping[str, Sequence[float]],
+    target: str = "",
+    pocket: int = -1,
+    budget: float = 0.5,
+    seed: int = 1,
+    rollouts: int = 200,
+    threads: int = 0,
+    noise: Noise = ...,
+    limits: Limits = ...,
+    target_first: bool = False,
+    only_target: bool = False,
+    cue_region: Optional[Tuple[Sequence[float], float]] = None,
+    configuration: Configuration = ...,
+) -> Plan: ...

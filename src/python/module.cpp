@@ -4,6 +4,7 @@
 
 #include "batch_binding.hpp"
 #include "configuration_binding.hpp"
+#include "plan_binding.hpp"
 #include "python_errors.hpp"
 #include "shot_binding.hpp"
 
@@ -14,4 +15,5 @@ PYBIND11_MODULE(_core, module)
   billiard_shot_planner::python::bindConfiguration(module);
   billiard_shot_planner::python::bindShots(module);
   billiard_shot_planner::python::bindBatches(module);
+  billiard_shot_planner::python::bindPlanning(module);
 }

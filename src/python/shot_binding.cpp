@@ -13,6 +13,7 @@
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
 #include "layout.hpp"
 #include "python_errors.hpp"
+#include "shot_results.hpp"
 
 namespace billiard_shot_planner::python
 {
@@ -20,22 +21,6 @@ namespace py = pybind11;
 
 namespace
 {
-/// One ball's path in a shot.
-struct BallPath
-{
-  std::string id;
-  BallTrajectory trajectory;
-};
-
-/// A whole shot: the strike and every ball's path, the cue ball first.
-struct Shot
-{
-  CueStrikeResult strike;
-  Eigen::Vector3d hit_point;
-  std::vector<BallPath> balls;
-  std::string first_contact;
-};
-
 CuePlacement placed(const Stroke& stroke, const py::handle& cue_ball, const ShotConfiguration& configuration)
 {
   return valueOf(placeStroke(stroke, point(cue_ball, "cue_ball"), configuration.ball_radius));
@@ -73,11 +58,7 @@ Shot predict(const Cue& given, const py::object& cue_ball, const py::object& bal
     py::gil_scoped_release release;
     outcome = predictShot(cue, configuration, others);
   }
-  ShotOutcome shot = valueOf(std::move(outcome));
-  Shot answer{shot.strike, shot.hit_point, {}, firstContact(shot.table)};
-  for (std::size_t i = 0; i < shot.table.balls.size(); ++i)
-    answer.balls.push_back({shot.table.ids[i], shot.table.balls[i]});
-  return answer;
+  return shotOf(valueOf(std::move(outcome)));
 }
 
 /// The path sampled: times (N,), positions (N, 3) and phases (N,) as numpy arrays.
