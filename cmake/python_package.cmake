@@ -24,10 +24,10 @@ install(TARGETS ${PROJECT_NAME}_python LIBRARY DESTINATION ${BSP_PYTHON_DESTINAT
 # Without catkin_python_setup(), the modules are copied beside the extension and installed with it. The stubs go with
 # both builds (catkin installs only .py files).
 if(NOT BILLIARD_SHOT_PLANNER_ROS)
-  foreach(source __init__.py _core.pyi py.typed)
+  foreach(source __init__.py distributed.py _core.pyi py.typed)
     configure_file(src/${PROJECT_NAME}/${source} ${BSP_PYTHON_BUILD_DIR}/${source} COPYONLY)
   endforeach()
-  install(FILES src/${PROJECT_NAME}/__init__.py DESTINATION ${BSP_PYTHON_DESTINATION})
+  install(FILES src/${PROJECT_NAME}/__init__.py src/${PROJECT_NAME}/distributed.py DESTINATION ${BSP_PYTHON_DESTINATION})
 endif()
 install(FILES src/${PROJECT_NAME}/_core.pyi src/${PROJECT_NAME}/py.typed DESTINATION ${BSP_PYTHON_DESTINATION})
 

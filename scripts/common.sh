@@ -28,7 +28,7 @@ DEMO_PACKAGES=(
 )
 TEST_PACKAGES=(
   librostest-dev python3-rostest python3-rosbag python3-tf2-ros python3-visualization-msgs
-  libgtest-dev libbenchmark-dev python3-pil python3-pytest python3-yaml
+  libgtest-dev libbenchmark-dev python3-pil python3-pytest python3-yaml python3-distributed
   clang-format clang-tidy catkin-lint
   clang libclang-rt-14-dev
 )

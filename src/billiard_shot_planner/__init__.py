@@ -10,7 +10,14 @@ Table frame: origin at the centre of the cloth, x along the length, z up; SI uni
 convention (from_pooltool / from_fastfiz convert the others'). Errors raise billiard_shot_planner.Error, a ValueError
 with `code` and `field`. With ROS, the package also holds the node's messages (billiard_shot_planner.msg, .srv).
 """
-from ._core import (
+# The package may lie in two places on the path: this source directory and catkin's devel space (with the compiled
+# core and the generated messages). A process that finds this one first (a Dask worker spawned with its parent's
+# path, which catkin's devel space extended with the sources) must still find the other's modules.
+from pkgutil import extend_path
+
+__path__ = extend_path(__path__, __name__)
+
+from ._core import (  # noqa: E402
     PHASES,
     BallPath,
     Configuration,

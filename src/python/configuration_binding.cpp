@@ -69,6 +69,23 @@ naming the parameter and leaves the configuration as it was.)")
       .def("__copy__", [](const ShotConfiguration& c) { return c; })
       .def(
           "__deepcopy__", [](const ShotConfiguration& c, const py::dict& /*memo*/) { return c; }, py::arg("memo"))
+      // Pickled as its numeric parameters by name: every choice a Python caller can make is one of them (the
+      // contact laws' kinds are the defaults'), so a configuration sent to another process (Dask) arrives whole.
+      .def(py::pickle(
+          [](ShotConfiguration& c)
+          {
+            py::dict state;
+            for (const NamedParameter& parameter : numericParameters(c))
+              state[py::str(parameterName(parameter.name))] = *parameter.value;
+            return state;
+          },
+          [](const py::dict& state)
+          {
+            ShotConfiguration c;
+            for (const auto& [name, value] : state)
+              set(c, py::str(name), value.cast<double>());
+            return c;
+          }))
       .def("__repr__", [](ShotConfiguration& c)
            { return "<Configuration of " + std::to_string(numericParameters(c).size()) + " numeric parameters>"; });
 }
