@@ -33,18 +33,25 @@ CuePlacement placed(CuePlacement cue, const py::handle& cue_ball, const ShotConf
   return cue;
 }
 
+/// call()'s value (an Expected) computed with the GIL released, or its error raised.
+template <class Call>
+auto withoutGil(const Call& call)
+{
+  decltype(call()) result = Error{};
+  {
+    py::gil_scoped_release release;
+    result = call();
+  }
+  return valueOf(std::move(result));
+}
+
 template <class Cue>
 CueStrikeResult strike(const Cue& given, const py::object& cue_ball, const py::object& balls,
                        const ShotConfiguration& configuration)
 {
   const CuePlacement cue = placed(given, cue_ball, configuration);
   const std::vector<TableBall> others = tableBalls(balls);
-  Expected<CueStrikeResult> result = Error{};
-  {
-    py::gil_scoped_release release;
-    result = strikeBall(cue, configuration, others);
-  }
-  return valueOf(std::move(result));
+  return withoutGil([&] { return strikeBall(cue, configuration, others); });
 }
 
 template <class Cue>
@@ -53,12 +60,7 @@ Shot predict(const Cue& given, const py::object& cue_ball, const py::object& bal
 {
   const CuePlacement cue = placed(given, cue_ball, configuration);
   const std::vector<TableBall> others = tableBalls(balls);
-  Expected<ShotOutcome> outcome = Error{};
-  {
-    py::gil_scoped_release release;
-    outcome = predictShot(cue, configuration, others);
-  }
-  return shotOf(valueOf(std::move(outcome)));
+  return shotOf(withoutGil([&] { return predictShot(cue, configuration, others); }));
 }
 
 /// The path sampled: times (N,), positions (N, 3) and phases (N,) as numpy arrays.

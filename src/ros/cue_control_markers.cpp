@@ -104,14 +104,32 @@ InteractiveMarkerControl cueDrawing(const CueHandles& handles)
   return drawing;
 }
 
-InteractiveMarker aimMarker(const CueHandles& handles, const std::string& frame)
+/// A handle named `name` in `frame` at `at`, drawn `scale` m large.
+InteractiveMarker handle(const char* name, const char* description, float scale, const std::string& frame,
+                         const geometry_msgs::Pose& at)
 {
   InteractiveMarker m;
   m.header.frame_id = frame;
-  m.name = AIM_HANDLE;
-  m.description = "aim: turn about the ball, raise the cue";
-  m.scale = 0.3f;
-  m.pose = pose(ballCentre(handles), aimOrientation(handles.stroke));
+  m.name = name;
+  m.description = description;
+  m.scale = scale;
+  m.pose = at;
+  return m;
+}
+
+/// A control that moves its handle in `mode` (along or across its x axis), always drawn as `shown`.
+InteractiveMarkerControl dragged(const std::string& name, uint8_t mode, const Marker& shown)
+{
+  InteractiveMarkerControl c = control(name, mode, Eigen::Quaterniond::Identity(), InteractiveMarkerControl::INHERIT);
+  c.always_visible = true;
+  c.markers.push_back(shown);
+  return c;
+}
+
+InteractiveMarker aimMarker(const CueHandles& handles, const std::string& frame)
+{
+  InteractiveMarker m = handle(AIM_HANDLE, "aim: turn about the ball, raise the cue", 0.3f, frame,
+                               pose(ballCentre(handles), aimOrientation(handles.stroke)));
   const Eigen::Quaterniond x_to_z(Eigen::AngleAxisd(-0.5 * M_PI, Eigen::Vector3d::UnitY()));
   const Eigen::Quaterniond x_to_y(Eigen::AngleAxisd(0.5 * M_PI, Eigen::Vector3d::UnitZ()));
   m.controls.push_back(cueDrawing(handles));
@@ -123,37 +141,24 @@ InteractiveMarker aimMarker(const CueHandles& handles, const std::string& frame)
 
 InteractiveMarker tipMarker(const CueHandles& handles, const std::string& frame)
 {
-  InteractiveMarker m;
-  m.header.frame_id = frame;
-  m.name = TIP_HANDLE;
-  m.description = "tip: the hit point on the ball";
-  m.scale = 0.06f;
   // x along the cue's horizontal direction: the control's plane (normal x) is the ball's face seen by the player.
-  m.pose = pose(hitPoint(handles), Eigen::Quaterniond(Eigen::AngleAxisd(handles.stroke.phi, Eigen::Vector3d::UnitZ())));
-  InteractiveMarkerControl plane = control("move", InteractiveMarkerControl::MOVE_PLANE, Eigen::Quaterniond::Identity(),
-                                           InteractiveMarkerControl::INHERIT);
-  plane.always_visible = true;
+  const Eigen::Quaterniond facing(Eigen::AngleAxisd(handles.stroke.phi, Eigen::Vector3d::UnitZ()));
+  InteractiveMarker m =
+      handle(TIP_HANDLE, "tip: the hit point on the ball", 0.06f, frame, pose(hitPoint(handles), facing));
   const double dot = 0.3 * handles.radius;
-  plane.markers.push_back(shape(Marker::SPHERE, {dot, dot, dot}, 1.0f, 0.1f, 0.1f));
-  m.controls.push_back(plane);
+  m.controls.push_back(
+      dragged("move", InteractiveMarkerControl::MOVE_PLANE, shape(Marker::SPHERE, {dot, dot, dot}, 1.0f, 0.1f, 0.1f)));
   return m;
 }
 
 InteractiveMarker speedMarker(const CueHandles& handles, const std::string& frame)
 {
-  InteractiveMarker m;
-  m.header.frame_id = frame;
-  m.name = SPEED_HANDLE;
-  m.description = "speed: pull back along the cue";
-  m.scale = 0.12f;
   const Eigen::Vector3d behind =
       hitPoint(handles) - handles.speed_scale * handles.stroke.speed * cueDirection(handles.stroke);
-  m.pose = pose(behind, aimOrientation(handles.stroke));
-  InteractiveMarkerControl axis = control("pull", InteractiveMarkerControl::MOVE_AXIS, Eigen::Quaterniond::Identity(),
-                                          InteractiveMarkerControl::INHERIT);
-  axis.always_visible = true;
-  axis.markers.push_back(shape(Marker::CUBE, {0.02, 0.04, 0.04}, 0.2f, 0.8f, 0.2f));
-  m.controls.push_back(axis);
+  InteractiveMarker m = handle(SPEED_HANDLE, "speed: pull back along the cue", 0.12f, frame,
+                               pose(behind, aimOrientation(handles.stroke)));
+  m.controls.push_back(
+      dragged("pull", InteractiveMarkerControl::MOVE_AXIS, shape(Marker::CUBE, {0.02, 0.04, 0.04}, 0.2f, 0.8f, 0.2f)));
   return m;
 }
 
