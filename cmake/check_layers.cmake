@@ -1,8 +1,9 @@
 # Checks the layering of the sources under SOURCE_DIR (include/billiard_shot_planner/<layer>/ and src/<layer>/):
 #   core → impact → scenarios → motion → shot → planning, calibration → io → ros, cli, python
 # A file may include its own layer's headers and the public headers of the layers below it; never a higher
-# layer's, never another layer's private header (src/<other>/…), and the ROS-free layers (core … shot, io, cli)
-# no ROS header; the physics layers (core … planning, calibration) no file-format library either.
+# layer's, never another layer's private header (src/<other>/…), and the ROS-free layers (all but ros)
+# no ROS header; the physics layers (core … planning, calibration) no file-format library either; no layer but
+# python includes pybind11.
 # Usage: cmake -DSOURCE_DIR=<package root> -P check_layers.cmake   (fails with a list of the violations)
 cmake_minimum_required(VERSION 3.16)
 
@@ -20,6 +21,7 @@ set(RANK_cli 7)
 set(RANK_python 7)
 set(ROS_HEADERS "^(ros|tf2|tf2_ros|tf2_geometry_msgs|geometry_msgs|std_msgs|visualization_msgs|dynamic_reconfigure|billiard_shot_planner/[A-Za-z]+\\.h)[/>.]")
 set(FORMAT_HEADERS "^(nlohmann|yaml-cpp)/")
+set(BINDING_HEADERS "^pybind11/")
 
 file(GLOB_RECURSE files RELATIVE "${SOURCE_DIR}"
      "${SOURCE_DIR}/include/billiard_shot_planner/*.hpp" "${SOURCE_DIR}/src/*.hpp" "${SOURCE_DIR}/src/*.cpp")
@@ -56,6 +58,8 @@ foreach(file IN LISTS files)
         list(APPEND violations "${file}: the ROS-free ${layer} layer includes a ROS header: ${line}")
       elseif(rank LESS 6 AND header MATCHES "${FORMAT_HEADERS}")
         list(APPEND violations "${file}: the physics layer ${layer} includes a file-format library: ${line}")
+      elseif(NOT layer STREQUAL "python" AND header MATCHES "${BINDING_HEADERS}")
+        list(APPEND violations "${file}: the ${layer} layer includes pybind11, which only the python layer may: ${line}")
       endif()
     endif()
   endforeach()
