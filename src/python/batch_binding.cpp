@@ -116,19 +116,8 @@ RowOutcome simulateRow(const Stroke& stroke, const Layout& layout, const ShotCon
 py::object errorsOf(const std::vector<RowOutcome>& rows)
 {
   py::list errors;
-  py::object type = py::module_::import("billiard_shot_planner._core").attr("Error");
   for (const RowOutcome& row : rows)
-  {
-    if (!row.error)
-    {
-      errors.append(py::none());
-      continue;
-    }
-    py::object error = type(row.error->describe());
-    error.attr("code") = toString(row.error->code);
-    error.attr("field") = row.error->field;
-    errors.append(error);
-  }
+    errors.append(row.error ? errorObject(*row.error) : py::none());
   return std::move(errors);
 }
 

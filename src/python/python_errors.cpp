@@ -16,13 +16,18 @@ void registerErrors(py::module_& module)
   module.attr("Error") = error;
 }
 
-void raise(const Error& error)
+py::object errorObject(const Error& error)
 {
-  py::object type = py::module_::import("billiard_shot_planner._core").attr("Error");
-  py::object exception = type(error.describe());
+  py::object exception = py::module_::import("billiard_shot_planner._core").attr("Error")(error.describe());
   exception.attr("code") = toString(error.code);
   exception.attr("field") = error.field;
-  PyErr_SetObject(type.ptr(), exception.ptr());
+  return exception;
+}
+
+void raise(const Error& error)
+{
+  py::object exception = errorObject(error);
+  PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(exception.ptr())), exception.ptr());
   throw py::error_already_set();
 }
 

@@ -13,6 +13,9 @@ namespace billiard_shot_planner::python
 /// `field` (the core's path, "cue_contact/friction" in the parameters' names) say what went wrong where.
 void registerErrors(pybind11::module_& module);
 
+/// The core's error as a billiard_shot_planner.Error object (not raised: a batch's rows carry theirs).
+pybind11::object errorObject(const Error& error);
+
 /// Raises the core's error as billiard_shot_planner.Error.
 [[noreturn]] void raise(const Error& error);
 

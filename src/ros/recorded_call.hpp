@@ -12,13 +12,13 @@ namespace billiard_shot_planner
 /// (the node's health, NodeHealth::recordCall).
 using CallRecorder = std::function<void(const std::string&, double, const ErrorCode&, const std::string&)>;
 
-/// work()'s result (a service's or an action's, with error_code and message), timed and reported to `record` as
-/// `call` (nothing is reported when `record` is empty).
+/// work()'s result (a service's or an action's, with error_code and message; a reference stays one), timed and
+/// reported to `record` as `call` (nothing is reported when `record` is empty).
 template <class Work>
-auto recordedCall(const CallRecorder& record, const std::string& call, Work&& work)
+decltype(auto) recordedCall(const CallRecorder& record, const std::string& call, Work&& work)
 {
   const ros::WallTime start = ros::WallTime::now();
-  auto result = work();
+  decltype(auto) result = work();
   if (record)
     record(call, (ros::WallTime::now() - start).toSec(), result.error_code, result.message);
   return result;

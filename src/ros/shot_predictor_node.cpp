@@ -276,8 +276,7 @@ ShotPlannerServer::NodeAccess ShotPredictorNode::plannerAccess()
   };
   access.place_point = [this](const geometry_msgs::PointStamped& point, const std::string& field)
   { return placePoint(point, field); };
-  access.record = [this](const std::string& call, double seconds, const ErrorCode& code, const std::string& message)
-  { health_.recordCall(call, seconds, code.val, message, ros::Time::now()); };
+  access.record = callRecorder();
   access.show = [this](const ShotPrediction& prediction)
   {
     if (animator_)
@@ -351,8 +350,7 @@ ShotCalibrationServer::NodeAccess ShotPredictorNode::calibrationAccess()
       return status.error();
     return placeCuePose(pose, speed);
   };
-  access.record = [this](const std::string& call, double seconds, const ErrorCode& code, const std::string& message)
-  { health_.recordCall(call, seconds, code.val, message, ros::Time::now()); };
+  access.record = callRecorder();
   return access;
 }
 
@@ -449,13 +447,21 @@ Expected<CuePlacement> ShotPredictorNode::placeCue(const PredictShot::Request& r
   return cue;
 }
 
+CallRecorder ShotPredictorNode::callRecorder()
+{
+  return [this](const std::string& call, double seconds, const ErrorCode& code, const std::string& message)
+  { health_.recordCall(call, seconds, code.val, message, ros::Time::now()); };
+}
+
 void ShotPredictorNode::predictRecorded(const std::string& call, PredictShot::Request& request,
                                         PredictShot::Response& response)
 {
-  const ros::WallTime start = ros::WallTime::now();
-  answer(request, response);
-  health_.recordCall(call, (ros::WallTime::now() - start).toSec(), response.error_code.val, response.message,
-                     ros::Time::now());
+  recordedCall(callRecorder(), call,
+               [&]() -> const PredictShot::Response&
+               {
+                 answer(request, response);
+                 return response;
+               });
 }
 
 bool ShotPredictorNode::predict(PredictShot::Request& request, PredictShot::Response& response)

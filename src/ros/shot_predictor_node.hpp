@@ -68,6 +68,8 @@ private:
                                                 PlanningSettings* planning = nullptr) const;
   /// A point in the table frame; errors name `field`.
   Expected<Eigen::Vector2d> placePoint(const geometry_msgs::PointStamped& point, const std::string& field) const;
+  /// Records a call answered in the node's health (/diagnostics).
+  CallRecorder callRecorder();
   ShotPlannerServer::NodeAccess plannerAccess();
   ShotCalibrationServer::NodeAccess calibrationAccess();
   CueCockpit::NodeAccess cockpitAccess();
