@@ -10,26 +10,28 @@
 #include <utility>
 
 #include "billiard_shot_planner/core/validation.hpp"
+#include "billiard_shot_planner/shot/configuration_fields.hpp"
 
 namespace billiard_shot_planner
 {
 namespace
 {
-Status readPockets(ParameterTree& parameters, Table& table)
+/// ~table/pockets, [[x, y, radius], …]; absent: six pockets laid out for the table's size.
+Status readPockets(ParameterTree& parameters, const std::string& name, std::vector<Pocket>& pockets, const Table& table)
 {
-  table.pockets = sixPockets(table.length, table.width);
-  const XmlRpc::XmlRpcValue* found = parameters.find("table/pockets");
+  pockets = sixPockets(table.length, table.width);
+  const XmlRpc::XmlRpcValue* found = parameters.find(name);
   if (!found)
     return {};
   XmlRpc::XmlRpcValue list = *found;  // XmlRpcValue's conversions are not const
   if (list.getType() != XmlRpc::XmlRpcValue::TypeArray)
-    return invalidArgument("table/pockets", "must be a list of [x, y, radius]");
-  table.pockets.clear();
+    return invalidArgument(name, "must be a list of [x, y, radius]");
+  pockets.clear();
   for (int i = 0; i < list.size(); ++i)
   {
-    const std::string name = "table/pockets[" + std::to_string(i) + "]";
+    const std::string element = name + "[" + std::to_string(i) + "]";
     if (list[i].getType() != XmlRpc::XmlRpcValue::TypeArray || list[i].size() != 3)
-      return invalidArgument(name, "must be [x, y, radius]");
+      return invalidArgument(element, "must be [x, y, radius]");
     double values[3];
     for (int k = 0; k < 3; ++k)
     {
@@ -39,77 +41,79 @@ Status readPockets(ParameterTree& parameters, Table& table)
       else if (v.getType() == XmlRpc::XmlRpcValue::TypeInt)
         values[k] = static_cast<int>(v);
       else
-        return invalidArgument(name, "must be [x, y, radius] numbers");
+        return invalidArgument(element, "must be [x, y, radius] numbers");
     }
-    table.pockets.push_back({{values[0], values[1]}, values[2]});
+    pockets.push_back({{values[0], values[1]}, values[2]});
   }
   return {};
 }
 
-/// A parameter that names one of two choices, with the two names.
-template <class Choice>
-struct TwoChoices
+/// Reads each field of the configuration from the parameter of its name (table.cloth.friction →
+/// ~table/cloth/friction); an absent parameter keeps the field's value.
+class ParameterReader final : public ConfigurationVisitor
 {
-  std::pair<const char*, Choice> first, second;
+public:
+  explicit ParameterReader(ParameterTree& parameters) : parameters_(parameters) {}
 
-  const char* nameOf(Choice value) const { return value == first.second ? first.first : second.first; }
-};
-const TwoChoices<RollingModel> ROLLING_MODELS{{"paper", RollingModel::Paper}, {"pooltool", RollingModel::Pooltool}};
-const TwoChoices<BallBallFriction> BALL_BALL_FRICTION_MODELS{{"alciatore", BallBallFriction::Alciatore},
-                                                             {"constant", BallBallFriction::Constant}};
-
-/// `value` becomes the choice the parameter `name` names; any other name is refused.
-template <class Choice>
-Status readChoice(ParameterTree& parameters, const std::string& name, const TwoChoices<Choice>& choices, Choice& value)
-{
-  std::string chosen = choices.nameOf(value);
-  if (Status status = parameters.read(name, chosen); !status)
-    return status;
-  if (chosen != choices.first.first && chosen != choices.second.first)
-    return invalidArgument(name, std::string("must be \"") + choices.first.first + "\" or \"" + choices.second.first +
-                                     "\", got \"" + chosen + "\"");
-  value = chosen == choices.first.first ? choices.first.second : choices.second.second;
-  return {};
-}
-
-Status readMotionChoices(ParameterTree& parameters, MotionParameters& motion)
-{
-  if (Status status = parameters.read("motion/planar", motion.planar); !status)
-    return status;
-  return readChoice(parameters, "motion/rolling_model", ROLLING_MODELS, motion.rolling_model);
-}
-
-Status readBallContactChoices(ParameterTree& parameters, BallContactSettings& contact)
-{
-  return readChoice(parameters, "ball_ball/friction_model", BALL_BALL_FRICTION_MODELS, contact.friction_model);
-}
-
-/// Each contact's surface by its parameter's name.
-std::vector<std::pair<const char*, SurfaceContact*>> contactSurfaces(ShotConfiguration& shot)
-{
-  return {{"cue_contact", &shot.cue_contact},
-          {"table/cloth", &shot.table.cloth},
-          {"table/cushion", &shot.table.cushion},
-          {"ball_ball", &shot.ball_contact.ball_ball}};
-}
-
-/// ~<contact>/law/type ("constant", "elastic_plastic"): each contact's law, at its default parameters; the law's
-/// own parameters (~table/cushion/law/yield_speed) are numeric parameters, read after it.
-Status readContactLaws(ParameterTree& parameters, ShotConfiguration& shot)
-{
-  for (auto [contact, surface] : contactSurfaces(shot))
+  void number(const std::string& path, double& value) override { keep(parameters_.read(parameterName(path), value)); }
+  void flag(const std::string& path, bool& value) override { keep(parameters_.read(parameterName(path), value)); }
+  void choice(const std::string& path, std::string& value, const std::vector<std::string>& /*options*/) override
   {
-    const std::string name = std::string(contact) + "/law";
-    std::string type = lawType(surface->normal_law);
-    if (Status status = parameters.read(name + "/type", type); !status)
-      return status;
-    auto law = lawOfType(type, name);
-    if (!law)
-      return namedAsParameter(Status(law.error()));
-    surface->normal_law = law.value();
+    keep(parameters_.read(parameterName(path), value));
   }
-  return {};
-}
+  void pockets(const std::string& path, std::vector<Pocket>& pockets, const Table& table) override
+  {
+    keep(readPockets(parameters_, parameterName(path), pockets, table));
+  }
+  Status status() const override { return first_error_; }
+
+private:
+  void keep(Status status)
+  {
+    if (first_error_ && !status)
+      first_error_ = std::move(status);
+  }
+
+  ParameterTree& parameters_;
+  Status first_error_;
+};
+
+/// Lists each field of the configuration under its parameter's name: numbers as numbers, the rest as text.
+class SettingsLister final : public ConfigurationVisitor
+{
+public:
+  explicit SettingsLister(SettingsDescription& description) : d_(description) {}
+
+  void number(const std::string& path, double& value) override
+  {
+    d_.names.push_back(parameterName(path));
+    d_.values.push_back(value);
+  }
+  void flag(const std::string& path, bool& value) override { text(path, value ? "true" : "false"); }
+  void choice(const std::string& path, std::string& value, const std::vector<std::string>& /*options*/) override
+  {
+    text(path, value);
+  }
+  void pockets(const std::string& path, std::vector<Pocket>& pockets, const Table& /*table*/) override
+  {
+    std::ostringstream list;
+    list.precision(std::numeric_limits<double>::max_digits10);  // reads back to the same doubles
+    list << "[";
+    for (std::size_t i = 0; i < pockets.size(); ++i)
+      list << (i ? ", [" : "[") << pockets[i].centre.x() << ", " << pockets[i].centre.y() << ", " << pockets[i].radius
+           << "]";
+    text(path, list.str() + "]");
+  }
+
+private:
+  void text(const std::string& path, const std::string& value)
+  {
+    d_.choice_names.push_back(parameterName(path));
+    d_.choice_values.push_back(value);
+  }
+
+  SettingsDescription& d_;
+};
 
 Status checkNodeSettings(const NodeSettings& s)
 {
@@ -144,12 +148,10 @@ Status readNodeSettings(ParameterTree& parameters, NodeSettings& s)
   return status;
 }
 
-Status readNumericParameters(ParameterTree& parameters, ShotConfiguration& shot)
+Status readConfiguration(ParameterTree& parameters, ShotConfiguration& shot)
 {
-  for (const NamedParameter& parameter : numericParameters(shot))
-    if (Status status = parameters.read(parameterName(parameter.name), *parameter.value); !status)
-      return status;
-  return {};
+  ParameterReader reader(parameters);
+  return namedAsParameter(visitConfiguration(shot, reader));
 }
 }  // namespace
 
@@ -157,13 +159,7 @@ Expected<NodeSettings> readSettings(ParameterTree& parameters)
 {
   NodeSettings s;
   // In order: what cannot be read, then the node's own settings, then the physics, then what nobody read.
-  if (Status status = firstError({readNodeSettings(parameters, s), readContactLaws(parameters, s.shot)}); !status)
-    return status.error();
-  // After the laws: the names of a law's own parameters follow the law each contact has.
-  if (Status status = firstError({readNumericParameters(parameters, s.shot), readPockets(parameters, s.shot.table),
-                                  readMotionChoices(parameters, s.shot.motion),
-                                  readBallContactChoices(parameters, s.shot.ball_contact)});
-      !status)
+  if (Status status = firstError({readNodeSettings(parameters, s), readConfiguration(parameters, s.shot)}); !status)
     return status.error();
   auto planning = readPlanningSettings(parameters);
   auto cockpit = readCockpitSettings(parameters);
@@ -200,8 +196,8 @@ SettingsDescription describeSettings(NodeSettings s)
   number("threads", s.threads);
   number("calibration/track_duration", s.recording.track_duration);
   number("calibration/max_shots", static_cast<double>(s.recording.max_shots));
-  for (const NamedParameter& parameter : numericParameters(s.shot))
-    number(parameterName(parameter.name), *parameter.value);
+  SettingsLister lister(d);
+  (void)visitConfiguration(s.shot, lister);  // a lister changes no choice: the walk cannot fail
   for (const PlanningParameter& parameter : planningParameters(s.planning))
     number(parameter.name, *parameter.value);
   number("planning/rollouts", s.planning.rollouts);
@@ -212,20 +208,6 @@ SettingsDescription describeSettings(NodeSettings s)
   choice("target_frame", s.target_frame);
   choice("cockpit/enabled", s.cockpit.enabled ? "true" : "false");
   choice("cockpit/animate", s.cockpit.animate ? "true" : "false");
-  choice("motion/planar", s.shot.motion.planar ? "true" : "false");
-  choice("motion/rolling_model", ROLLING_MODELS.nameOf(s.shot.motion.rolling_model));
-  choice("ball_ball/friction_model", BALL_BALL_FRICTION_MODELS.nameOf(s.shot.ball_contact.friction_model));
-  for (auto [contact, surface] : contactSurfaces(s.shot))
-    choice(std::string(contact) + "/law/type", lawType(surface->normal_law));
-  std::ostringstream pockets;
-  pockets.precision(std::numeric_limits<double>::max_digits10);  // reads back to the same doubles
-  pockets << "[";
-  for (std::size_t i = 0; i < s.shot.table.pockets.size(); ++i)
-  {
-    const Pocket& pocket = s.shot.table.pockets[i];
-    pockets << (i ? ", [" : "[") << pocket.centre.x() << ", " << pocket.centre.y() << ", " << pocket.radius << "]";
-  }
-  choice("table/pockets", pockets.str() + "]");
   return d;
 }
 

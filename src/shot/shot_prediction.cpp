@@ -1,6 +1,7 @@
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
 #include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/motion/table_strike.hpp"
+#include "billiard_shot_planner/shot/configuration_fields.hpp"
 
 #include <algorithm>
 #include <string>
@@ -48,48 +49,28 @@ CueStrike strikePhysics(const ShotConfiguration& c)
   return strike;
 }
 
+namespace
+{
+/// Every number of a configuration with its place in it.
+class NumberCollector final : public ConfigurationVisitor
+{
+public:
+  void number(const std::string& path, double& value) override { numbers.push_back({path, &value}); }
+  void flag(const std::string& /*path*/, bool& /*value*/) override {}
+  void choice(const std::string& /*path*/, std::string& /*value*/, const std::vector<std::string>& /*options*/) override
+  {
+  }
+  void pockets(const std::string& /*path*/, std::vector<Pocket>& /*pockets*/, const Table& /*table*/) override {}
+
+  std::vector<NamedParameter> numbers;
+};
+}  // namespace
+
 std::vector<NamedParameter> numericParameters(ShotConfiguration& c)
 {
-  std::vector<NamedParameter> parameters{{"cue_mass", &c.cue_mass},
-                                         {"cue_end_mass", &c.cue_end_mass},
-                                         {"ball_mass", &c.ball_mass},
-                                         {"ball_radius", &c.ball_radius},
-                                         {"cue_contact.restitution", &c.cue_contact.restitution},
-                                         {"cue_contact.friction", &c.cue_contact.friction},
-                                         {"cue_contact.eta2", &c.cue_contact.eta2},
-                                         {"stiffness_ratio", &c.stiffness_ratio},
-                                         {"table.length", &c.table.length},
-                                         {"table.width", &c.table.width},
-                                         {"table.cushion_height", &c.table.cushion_height},
-                                         {"table.cushion_stiffness_ratio", &c.table.cushion_stiffness_ratio},
-                                         {"table.cloth.restitution", &c.table.cloth.restitution},
-                                         {"table.cloth.friction", &c.table.cloth.friction},
-                                         {"table.cloth.eta2", &c.table.cloth.eta2},
-                                         {"table.cushion.restitution", &c.table.cushion.restitution},
-                                         {"table.cushion.friction", &c.table.cushion.friction},
-                                         {"table.cushion.eta2", &c.table.cushion.eta2},
-                                         {"motion.gravity", &c.motion.gravity},
-                                         {"motion.sliding_friction", &c.motion.sliding_friction},
-                                         {"motion.rolling_friction", &c.motion.rolling_friction},
-                                         {"motion.spinning_friction", &c.motion.spinning_friction},
-                                         {"motion.min_bounce_speed", &c.motion.min_bounce_speed},
-                                         {"motion.max_time", &c.motion.max_time},
-                                         {"solver.relative_tolerance", &c.solver.relative_tolerance},
-                                         {"solver.absolute_tolerance", &c.solver.absolute_tolerance},
-                                         {"solver.max_seconds", &c.solver.max_seconds},
-                                         {"ball_ball.restitution", &c.ball_contact.ball_ball.restitution},
-                                         {"ball_ball.friction", &c.ball_contact.ball_ball.friction},
-                                         {"ball_ball.eta2", &c.ball_contact.ball_ball.eta2},
-                                         {"ball_ball.cloth_stiffness_ratio", &c.ball_contact.stiffness_ratio}};
-  // Each law declares its own parameters (NormalLaw): the names follow the law the contact has.
-  for (auto [contact, surface] :
-       {std::pair{"cue_contact", &c.cue_contact}, std::pair{"table.cloth", &c.table.cloth},
-        std::pair{"table.cushion", &c.table.cushion}, std::pair{"ball_ball", &c.ball_contact.ball_ball}})
-    visitLawParameters(surface->normal_law,
-                       [&, contact = contact](const char* name, double& value) {
-                         parameters.push_back({std::string(contact) + ".law." + name, &value});
-                       });
-  return parameters;
+  NumberCollector collector;
+  (void)visitConfiguration(c, collector);  // it changes no choice: the walk cannot fail
+  return collector.numbers;
 }
 
 Status applyOverride(ShotConfiguration& configuration, const std::string& name, double value)

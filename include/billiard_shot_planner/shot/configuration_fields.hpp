@@ -1,0 +1,82 @@
+#pragma once
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "billiard_shot_planner/core/expected.hpp"
+#include "billiard_shot_planner/motion/table.hpp"
+#include "billiard_shot_planner/shot/shot_prediction.hpp"
+
+namespace billiard_shot_planner
+{
+/// What a front end does with each field of a ShotConfiguration: read it from a file or a parameter server, list
+/// it, set it by name (the pattern of Drake's `Serialize(Archive*)`). visitConfiguration walks the fields once, in
+/// one order, so a new field is declared there and every front end (ROS parameters, YAML, Python) follows.
+/// A visitor that fails keeps its own first error and returns it from `status()`; the walk then stops with it.
+class ConfigurationVisitor
+{
+public:
+  virtual ~ConfigurationVisitor() = default;
+  /// A number at `path` ("table.cloth.friction"); the visitor may change it (visitConfiguration validates after).
+  virtual void number(const std::string& path, double& value) = 0;
+  /// A yes or no ("motion.planar").
+  virtual void flag(const std::string& path, bool& value) = 0;
+  /// One of `options` by name ("motion.rolling_model": "paper" or "pooltool"); `value` holds the current one. A
+  /// visitor that sets it to a name not among the options makes visitConfiguration fail naming `path`.
+  virtual void choice(const std::string& path, std::string& value, const std::vector<std::string>& options) = 0;
+  /// The table's pockets ("table.pockets"), after the table's size: a reader that finds none may lay the default
+  /// ones out for the size it read (sixPockets).
+  virtual void pockets(const std::string& path, std::vector<Pocket>& pockets, const Table& table) = 0;
+  /// The visitor's first error, once it has failed: the walk stops and returns it.
+  virtual Status status() const { return {}; }
+};
+
+/// Calls the visitor for every field of the configuration: the numbers (numericParameters' names), the flags, the
+/// choices — each contact's law type ("table.cushion.law.type") before that law's own parameters, whose names
+/// follow the type — and the pockets. Errors: the visitor's own first one (status()), or a choice set to a name that is
+/// not an option (InvalidArgument naming the path and listing the options). The configuration is not validated
+/// here (validate()).
+Status visitConfiguration(ShotConfiguration& configuration, ConfigurationVisitor& visitor);
+
+/// The choices of the configuration and their options, by path: motion.rolling_model, ball_ball.friction_model,
+/// and each contact's law type.
+struct NamedChoice
+{
+  std::string name;
+  std::string value;
+  std::vector<std::string> options;
+};
+std::vector<NamedChoice> configurationChoices(ShotConfiguration configuration);
+
+/// Sets the choice or flag `name` ("motion.rolling_model", "motion.planar": "true"/"false") to `value` on a copy and
+/// keeps it when the configuration stays valid. Errors: an unknown name, a value that is not an option.
+Status applyChoice(ShotConfiguration& configuration, const std::string& name, const std::string& value);
+
+/// "table.cloth.friction" → "table/cloth/friction": a field's path as the parameters' name, which the ROS node and
+/// the Python API share (each front end maps the core's paths to its own names at its boundary).
+inline std::string parameterName(std::string path)
+{
+  std::replace(path.begin(), path.end(), '.', '/');
+  return path;
+}
+
+/// Whether `path` lies in a configuration ("table.cloth.friction", "table.pockets[2]") rather than in a call's other
+/// input ("shots[0].tracks.cue[3].t"): its first step is one of the configuration's.
+bool isConfigurationPath(const std::string& path);
+
+/// A call's error field as the parameters name it: a configuration path with '/' ("table/cloth/friction"), any
+/// other field as it is.
+inline std::string parameterNameOfField(const std::string& field)
+{
+  return isConfigurationPath(field) ? parameterName(field) : field;
+}
+
+/// "table/cloth/friction" → "table.cloth.friction".
+inline std::string configurationPath(std::string parameter_name)
+{
+  std::replace(parameter_name.begin(), parameter_name.end(), '/', '.');
+  return parameter_name;
+}
+
+}  // namespace billiard_shot_planner
