@@ -9,13 +9,14 @@ find_package(pybind11 REQUIRED)
 add_library(${PROJECT_NAME}_python MODULE
   src/python/batch_binding.cpp
   src/python/configuration_binding.cpp
+  src/python/fit_binding.cpp
   src/python/layout.cpp
   src/python/module.cpp
   src/python/plan_binding.cpp
   src/python/python_errors.cpp
   src/python/shot_binding.cpp
 )
-target_link_libraries(${PROJECT_NAME}_python PRIVATE ${PROJECT_NAME}_planning pybind11::module)
+target_link_libraries(${PROJECT_NAME}_python PRIVATE ${PROJECT_NAME}_io pybind11::module)
 pybind11_extension(${PROJECT_NAME}_python)  # the interpreter's suffix (_core.cpython-311-x86_64-linux-gnu.so)
 set_target_properties(${PROJECT_NAME}_python PROPERTIES OUTPUT_NAME _core CXX_VISIBILITY_PRESET hidden
                       LIBRARY_OUTPUT_DIRECTORY ${BSP_PYTHON_BUILD_DIR})

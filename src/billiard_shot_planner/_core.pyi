@@ -12,14 +12,22 @@ class Error(ValueError):
     code: str
     field: str
 
+Field = float | bool | str | list[Tuple[float, float, float]]
+
 class Configuration:
-    """The shot's physics by the ROS node's parameter names; the node's defaults."""
+    """The shot's physics by the ROS node's parameter names (numbers, flags, choices, pockets); the node's defaults."""
 
     def __init__(self) -> None: ...
-    def __getitem__(self, name: str) -> float: ...
-    def __setitem__(self, name: str, value: float) -> None: ...
+    @staticmethod
+    def load(*paths: str) -> Configuration: ...
+    def with_table_file(self, path: str) -> Configuration: ...
+    def __getitem__(self, name: str) -> Field: ...
+    def __setitem__(self, name: str, value: Field) -> None: ...
     def __contains__(self, name: str) -> bool: ...
+    def update(self, fields: Mapping[str, Field]) -> None: ...
+    def to_dict(self) -> dict[str, Field]: ...
     def names(self) -> list[str]: ...
+    def choices(self) -> dict[str, list[str]]: ...
     def copy(self) -> Configuration: ...
 
 class Stroke:
@@ -166,3 +174,40 @@ def plan_shot(
     cue_region: Optional[Tuple[Sequence[float], float]] = None,
     configuration: Configuration = ...,
 ) -> Plan: ...
+
+class FittedParameter:
+    name: str
+    value: float
+    sigma: float
+    identifiable: bool
+    at_bound: bool
+
+class FitResult:
+    parameters: list[FittedParameter]
+    correlation: npt.NDArray[np.float64]
+    residuals: npt.NDArray[np.float64]
+    initial_cost: float
+    final_cost: float
+    degrees_of_freedom: int
+    chi2_per_dof: float
+    explains_data: bool
+    converged: bool
+    message: str
+    iterations: int
+    values: dict[str, float]
+    def overlay_yaml(self, origin: str = "fitted from Python") -> str: ...
+
+class TrackFit:
+    fit: FitResult
+    shot_rms: list[float]
+
+def fit_tracks(
+    shots: Sequence[Mapping[str, Any]],
+    parameters: Sequence[str],
+    configuration: Configuration = ...,
+    position_sigma: float = 0.005,
+    starts: int = 1,
+    max_seconds: float = 60.0,
+    threads: int = 1,
+    robust_loss_sigmas: float = 0.0,
+) -> TrackFit: ...

@@ -4,6 +4,7 @@
 
 #include "batch_binding.hpp"
 #include "configuration_binding.hpp"
+#include "fit_binding.hpp"
 #include "plan_binding.hpp"
 #include "python_errors.hpp"
 #include "shot_binding.hpp"
@@ -16,4 +17,5 @@ PYBIND11_MODULE(_core, module)
   billiard_shot_planner::python::bindShots(module);
   billiard_shot_planner::python::bindBatches(module);
   billiard_shot_planner::python::bindPlanning(module);
+  billiard_shot_planner::python::bindFits(module);
 }

@@ -1,7 +1,5 @@
 #include "python_errors.hpp"
 
-#include <algorithm>
-
 namespace billiard_shot_planner::python
 {
 namespace py = pybind11;
@@ -35,12 +33,6 @@ void check(const Status& status)
 {
   if (!status)
     raise(status.error());
-}
-
-std::string parameterName(std::string path)
-{
-  std::replace(path.begin(), path.end(), '.', '/');
-  return path;
 }
 
 }  // namespace billiard_shot_planner::python

@@ -31,8 +31,4 @@ T valueOf(Expected<T> expected)
 /// Nothing, or the error raised.
 void check(const Status& status);
 
-/// "table.cloth.friction" → "table/cloth/friction": the configuration's paths as the parameters' names, which the
-/// Python API shares with the ROS node.
-std::string parameterName(std::string path);
-
 }  // namespace billiard_shot_planner::python

@@ -1,6 +1,7 @@
 """Configuration: the node's defaults (checked against the shipped config/default.yaml, read here with PyYAML), the
 parameters by the node's names, and refusals that name the parameter and leave the configuration as it was."""
 import math
+import pickle
 
 import pytest
 import yaml
@@ -72,5 +73,105 @@ def test_an_unknown_name_is_named():
     assert raised.value.field == "table/clth/friction"
     with pytest.raises(bsp.Error):
         config["table/clth/friction"] = 0.2
-    with pytest.raises(TypeError):
+    with pytest.raises(bsp.Error) as raised:
         config["ball_mass"] = "heavy"
+    assert raised.value.field == "ball_mass"
+
+
+
+def test_choices_and_flags_are_set_by_name_and_checked():
+    config = bsp.Configuration()
+    assert config.choices()["motion/rolling_model"] == ["paper", "pooltool"]
+    assert config["motion/rolling_model"] == "paper" and config["motion/planar"] is False
+    config["motion/rolling_model"] = "pooltool"
+    config["motion/planar"] = True
+    assert config["motion/rolling_model"] == "pooltool" and config["motion/planar"] is True
+    for name, value in [("motion/rolling_model", "leckie"), ("motion/planar", "yes"), ("ball_ball/friction_model", 3)]:
+        with pytest.raises(bsp.Error) as raised:
+            config[name] = value
+        assert raised.value.field == name
+    assert config["motion/rolling_model"] == "pooltool"
+
+
+def test_a_law_type_brings_its_own_parameters():
+    config = bsp.Configuration()
+    assert "table/cushion/law/yield_speed" not in config
+    config.update({"table/cushion/law/type": "elastic_plastic", "table/cushion/law/yield_speed": 1.272})
+    assert config["table/cushion/law/yield_speed"] == 1.272
+    with pytest.raises(bsp.Error) as raised:
+        config["table/cushion/law/type"] = "hertz_like"
+    assert raised.value.field == "table/cushion/law/type"
+
+
+def test_update_is_all_or_none():
+    config = bsp.Configuration()
+    with pytest.raises(bsp.Error) as raised:
+        config.update({"ball_mass": 0.2, "table/cloth/friction": -1.0})
+    assert raised.value.field == "table/cloth/friction"
+    assert config["ball_mass"] == 0.17
+
+
+def test_pockets_are_a_field():
+    config = bsp.Configuration()
+    assert len(config["table/pockets"]) == 6
+    config["table/pockets"] = [(1.27, 0.635, 0.05)]
+    assert config["table/pockets"] == [(1.27, 0.635, 0.05)]
+    with pytest.raises(bsp.Error) as raised:
+        config["table/pockets"] = [(1.0, 2.0)]
+    assert raised.value.field == "table/pockets"
+
+
+def test_a_pickled_configuration_keeps_every_field():
+    config = bsp.Configuration()
+    config.update({"table/cushion/law/type": "elastic_plastic", "table/cushion/law/yield_speed": 1.5,
+                   "motion/rolling_model": "pooltool", "motion/planar": True, "table/pockets": [(0.0, 0.635, 0.07)]})
+    assert pickle.loads(pickle.dumps(config)).to_dict() == config.to_dict()
+
+
+def shipped(name):
+    return yaml.safe_load((PACKAGE_ROOT / "config" / name).read_text())
+
+
+def test_load_reads_the_shipped_parameter_files_in_turn():
+    config = bsp.Configuration.load(str(PACKAGE_ROOT / "config" / "default.yaml"),
+                                    str(PACKAGE_ROOT / "config" / "paper_masse.yaml"))
+    masse = flatten(shipped("paper_masse.yaml"))
+    assert masse["cue_end_mass"] == math.inf and config["cue_end_mass"] == math.inf
+    assert config["cue_contact/eta2"] == masse["cue_contact/eta2"] == 7.0
+    assert config["motion/planar"] is True
+    # What the overlay leaves out keeps the first file's value.
+    assert config["ball_ball/restitution"] == flatten(shipped("default.yaml"))["ball_ball/restitution"]
+    cue = bsp.Configuration.load(str(PACKAGE_ROOT / "config" / "cues" / "hand_held.yaml"))
+    assert cue["cue_mass"] == flatten(shipped("cues/hand_held.yaml"))["cue_mass"]
+
+
+def test_a_table_file_brings_its_table_balls_and_laws():
+    config = bsp.Configuration().with_table_file(str(PACKAGE_ROOT / "config" / "tables" / "snooker_mathavan.yaml"))
+    snooker = flatten(shipped("tables/snooker_mathavan.yaml"))
+    assert config["ball_mass"] == snooker["balls/mass"] == 0.1406
+    assert config["table/length"] == snooker["table/length"]
+    assert config["table/cushion/law/type"] == "elastic_plastic"
+    assert config["table/cushion/law/yield_speed"] == snooker["table/cushion/law/yield_speed"]
+    assert config["table/pockets"][0] == pytest.approx((-1.7845, -0.889, 0.045))
+
+
+@pytest.mark.parametrize(
+    "text, field",
+    [("table:\n  cloth:\n    frition: 0.2\n", "table/cloth/frition"),
+     ("ball_mas: 0.2\n", "ball_mas"),
+     ("motion: {rolling_model: leckie}\n", "motion/rolling_model"),
+     ("table: {cloth: {friction: fast}}\n", "table/cloth/friction"),
+     ("table: {pockets: [[0, 0]]}\n", "table/pockets[0]"),
+     ("cue_mass: [1, 2]\n", "cue_mass")])
+def test_a_bad_parameter_file_names_the_field(tmp_path, text, field):
+    path = tmp_path / "bad.yaml"
+    path.write_text(text)
+    with pytest.raises(bsp.Error) as raised:
+        bsp.Configuration.load(str(path))
+    assert raised.value.field == field
+
+
+def test_a_missing_file_is_named(tmp_path):
+    with pytest.raises(bsp.Error) as raised:
+        bsp.Configuration.load(str(tmp_path / "absent.yaml"))
+    assert raised.value.field == "parameter_file"
