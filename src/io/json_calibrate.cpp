@@ -9,6 +9,7 @@
 #include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/io/calibration_overlay.hpp"
 #include "billiard_shot_planner/planning/stroke.hpp"
+#include "billiard_shot_planner/shot/configuration_fields.hpp"
 #include "json_configuration.hpp"
 #include "json_fields.hpp"
 #include "json_table.hpp"
@@ -22,18 +23,6 @@ namespace
 /// Bounds on a request's work: shots and track points (a fit's time is bounded by its budget_ms).
 constexpr std::size_t MAX_CALIBRATION_SHOTS = 200;
 constexpr std::size_t MAX_TRACK_POINTS = 200000;
-
-std::string dotted(std::string name)
-{
-  std::replace(name.begin(), name.end(), '/', '.');
-  return name;
-}
-
-std::string slashed(std::string name)
-{
-  std::replace(name.begin(), name.end(), '.', '/');
-  return name;
-}
 
 /// "fit": the names (the node's, with '/') or {"name", "start", "lower", "upper"}; the start defaults to the
 /// request's value, the bounds to fitParameterFor()'s.
@@ -53,7 +42,7 @@ Expected<std::vector<FitParameter>> fitParameters(const json& request, const Sho
                                                                      : nullptr;
     if (!name || !name->is_string())
       return invalidArgument(field, "must be a parameter's name or {\"name\", \"start\", \"lower\", \"upper\"}");
-    auto found = fitParameterFor(configuration, dotted(name->get<std::string>()), field);
+    auto found = fitParameterFor(configuration, configurationPath(name->get<std::string>()), field);
     if (!found)
       return found.error();
     FitParameter parameter = found.value();
@@ -109,7 +98,14 @@ Expected<CuePlacement> strokeCue(const json& shot, const std::string& prefix, co
   return cue;
 }
 
-Expected<ObservedShot> observedShot(const json& shot, std::size_t k, double radius, std::string& cue_ball)
+/// How a request's shot names its balls: the cue ball's id and its index in the shot's "balls".
+struct CueBallOfShot
+{
+  std::string id;
+  std::size_t index = 0;
+};
+
+Expected<ObservedShot> observedShot(const json& shot, std::size_t k, double radius, CueBallOfShot& cue_ball)
 {
   const std::string prefix = "shots[" + std::to_string(k) + "]";
   if (!shot.is_object())
@@ -120,7 +116,7 @@ Expected<ObservedShot> observedShot(const json& shot, std::size_t k, double radi
   auto cue_index = cueBallIndex(shot, balls.value());
   if (!cue_index)
     return nested(prefix, cue_index.error());
-  cue_ball = balls.value()[cue_index.value()].id;
+  cue_ball = {balls.value()[cue_index.value()].id, cue_index.value()};
   ObservedShot observed;
   auto cue = strokeCue(shot, prefix, balls.value()[cue_index.value()].state.position.head<2>(), radius);
   if (!cue)
@@ -129,28 +125,47 @@ Expected<ObservedShot> observedShot(const json& shot, std::size_t k, double radi
   for (std::size_t i = 0; i < balls.value().size(); ++i)
     if (i != cue_index.value())
       observed.others.push_back(balls.value()[i]);
-  auto read = tracks(shot, prefix, cue_ball);
+  auto read = tracks(shot, prefix, cue_ball.id);
   if (!read)
     return read.error();
   observed.tracks = read.value();
   return observed;
 }
 
-/// A fit's error in the request's names: the cue ball's track under its own id, parameters with '/'.
-Error inRequestTerms(Error error, const std::vector<std::string>& cue_balls)
+/// The core's name of a shot's input ("cue.ball", "others[2].position", "tracks.cue[3].t") in the request's: the
+/// balls at their places in the shot's "balls", the cue ball's track under its own id, the cue's fields as "cue".
+std::string shotField(const std::string& rest, const CueBallOfShot& cue_ball)
 {
-  const std::string cue_track = std::string(".tracks.") + CUE_BALL_ID;
-  const std::size_t at = error.field.find(cue_track);
-  if (at != std::string::npos && error.field.rfind("shots[", 0) == 0)
+  const std::string cue_track = std::string("tracks.") + CUE_BALL_ID;
+  if (rest.rfind("cue.ball", 0) == 0)
+    return "balls[" + std::to_string(cue_ball.index) + "]" + (rest.size() > 8 ? rest.substr(8) : ".position");
+  if (rest.rfind("cue", 0) == 0)
+    return "cue";
+  if (rest.rfind("others[", 0) == 0)
   {
-    const std::size_t k = std::stoul(error.field.substr(6));
-    if (k < cue_balls.size())
-      error.field.replace(at + 8, std::string(CUE_BALL_ID).size(), cue_balls[k]);
+    const std::size_t close = rest.find(']');
+    const std::size_t j = std::stoul(rest.substr(7, close - 7));
+    return "balls[" + std::to_string(j < cue_ball.index ? j : j + 1) + "]" + rest.substr(close + 1);
+  }
+  if (rest.rfind(cue_track, 0) == 0 && (rest.size() == cue_track.size() || rest[cue_track.size()] == '['))
+    return "tracks." + cue_ball.id + rest.substr(cue_track.size());
+  return rest;
+}
+
+/// A fit's error in the request's names: a shot's input as shotField(), parameters with '/'.
+Error inRequestTerms(Error error, const std::vector<CueBallOfShot>& cue_balls)
+{
+  if (error.field.rfind("shots[", 0) == 0)
+  {
+    const std::size_t close = error.field.find(']');
+    const std::size_t k = std::stoul(error.field.substr(6, close - 6));
+    if (k < cue_balls.size() && close + 1 < error.field.size() && error.field[close + 1] == '.')
+      error.field = error.field.substr(0, close + 2) + shotField(error.field.substr(close + 2), cue_balls[k]);
   }
   else if (error.field == "position_sigma")
     error.field = "position_noise";
-  else if (error.field.find('.') != std::string::npos && error.field.rfind("shots", 0) != 0)
-    error.field = slashed(error.field);
+  else
+    error.field = parameterNameOfField(error.field);
   return error;
 }
 
@@ -161,10 +176,10 @@ json answerJson(const TrackFit& fitted)
   for (std::size_t i = 0; i < fit.parameters.size(); ++i)
   {
     const FittedParameter& p = fit.parameters[i];
-    parameters[slashed(p.name)] = {{"value", p.value},
-                                   {"sigma", std::isfinite(p.sigma) ? json(p.sigma) : json(nullptr)},
-                                   {"identifiable", p.identifiable},
-                                   {"at_bound", p.at_bound}};
+    parameters[parameterName(p.name)] = {{"value", p.value},
+                                         {"sigma", std::isfinite(p.sigma) ? json(p.sigma) : json(nullptr)},
+                                         {"identifiable", p.identifiable},
+                                         {"at_bound", p.at_bound}};
     json row = json::array();
     for (std::size_t j = 0; j < fit.parameters.size(); ++j)
     {
@@ -228,11 +243,11 @@ Expected<json> solveCalibrate(const json& request, const SolverOptions& options)
   if (!request.contains("shots") || !request.at("shots").is_array())
     return invalidArgument("shots", "is required: an array of {\"balls\", \"cue\", \"tracks\"}");
   std::vector<ObservedShot> shots;
-  std::vector<std::string> cue_balls;
+  std::vector<CueBallOfShot> cue_balls;
   std::size_t points = 0;
   for (std::size_t k = 0; k < request.at("shots").size() && k <= MAX_CALIBRATION_SHOTS; ++k)
   {
-    std::string cue_ball;
+    CueBallOfShot cue_ball;
     auto shot = observedShot(request.at("shots")[k], k, configuration.value().ball_radius, cue_ball);
     if (!shot)
       return shot.error();

@@ -90,6 +90,23 @@ ObservedShot observedShot(const py::handle& given, const ShotConfiguration& conf
   return observed;
 }
 
+/// A fit's error in the call's names: a shot's input as that shot's dict names it ("shots[0].balls['two']"), a
+/// parameter as the parameters are named.
+Error inCallTerms(Error error, const std::vector<ObservedShot>& shots)
+{
+  const std::size_t close = error.field.find(']');
+  if (error.field.rfind("shots[", 0) != 0 || close == std::string::npos || close + 1 >= error.field.size())
+    return inPythonTerms(error, {});
+  const std::size_t k = std::stoul(error.field.substr(6, close - 6));
+  if (k >= shots.size())
+    return error;
+  const std::string shot = error.field.substr(0, close + 2);  // "shots[0]."
+  error.field = error.field.substr(close + 2);
+  error = inPythonTerms(error, shots[k].others);
+  error.field = shot + error.field;
+  return error;
+}
+
 FitOptions fitOptions(int starts, double max_seconds, int threads, double robust_loss_sigmas)
 {
   FitOptions options;
@@ -127,11 +144,7 @@ TrackFit fitTracksFromPython(const py::list& shots, const std::vector<std::strin
     fit = fitTracks(configuration, unknowns, observed, position_sigma, options);
   }
   if (!fit)
-  {
-    Error error = fit.error();
-    error.field = parameterNameOfField(error.field);
-    raise(error);
-  }
+    raise(inCallTerms(fit.error(), observed));
   for (FittedParameter& parameter : fit.value().fit.parameters)
     parameter.name = parameterName(parameter.name);
   return fit.value();

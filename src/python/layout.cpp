@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "billiard_shot_planner/shot/configuration_fields.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
 #include "python_errors.hpp"
 
@@ -74,6 +75,24 @@ std::vector<TableBall> tableBalls(const py::object& balls)
 Layout layoutOf(const py::handle& cue_ball, const py::object& balls)
 {
   return {point(cue_ball, "cue_ball"), tableBalls(balls)};
+}
+
+Error inPythonTerms(Error error, const std::vector<TableBall>& others)
+{
+  const std::string cue_ball = "cue.ball";
+  const std::string other = "others[";
+  if (error.field.rfind(cue_ball, 0) == 0)
+    error.field = "cue_ball" + error.field.substr(cue_ball.size());
+  else if (error.field.rfind(other, 0) == 0)
+  {
+    const std::size_t close = error.field.find(']');
+    const std::size_t k = std::stoul(error.field.substr(other.size(), close - other.size()));
+    if (k < others.size())
+      error.field = "balls['" + others[k].id + "']" + error.field.substr(close + 1);
+  }
+  else
+    error.field = parameterNameOfField(error.field);
+  return error;
 }
 
 }  // namespace billiard_shot_planner::python

@@ -27,4 +27,9 @@ Eigen::Vector3d vector3(const pybind11::handle& given, const std::string& field)
 std::vector<TableBall> tableBalls(const pybind11::object& balls);
 Layout layoutOf(const pybind11::handle& cue_ball, const pybind11::object& balls);
 
+/// A core error of a strike or a shot in the Python call's names: the cue ball ("cue.ball") as "cue_ball", the other
+/// balls ("others[1].position") by their ids ("balls['two']"), a configuration's field as its parameter
+/// ("table/cloth/friction"); the cue's own fields keep the core's names ("cue.tip", "cue").
+Error inPythonTerms(Error error, const std::vector<TableBall>& others);
+
 }  // namespace billiard_shot_planner::python

@@ -33,16 +33,19 @@ CuePlacement placed(CuePlacement cue, const py::handle& cue_ball, const ShotConf
   return cue;
 }
 
-/// call()'s value (an Expected) computed with the GIL released, or its error raised.
+/// call()'s value (an Expected) computed with the GIL released, or its error raised in the names of a call with
+/// the balls `others`.
 template <class Call>
-auto withoutGil(const Call& call)
+auto withoutGil(const Call& call, const std::vector<TableBall>& others)
 {
   decltype(call()) result = Error{};
   {
     py::gil_scoped_release release;
     result = call();
   }
-  return valueOf(std::move(result));
+  if (!result)
+    raise(inPythonTerms(result.error(), others));
+  return std::move(result).value();
 }
 
 template <class Cue>
@@ -51,7 +54,7 @@ CueStrikeResult strike(const Cue& given, const py::object& cue_ball, const py::o
 {
   const CuePlacement cue = placed(given, cue_ball, configuration);
   const std::vector<TableBall> others = tableBalls(balls);
-  return withoutGil([&] { return strikeBall(cue, configuration, others); });
+  return withoutGil([&] { return strikeBall(cue, configuration, others); }, others);
 }
 
 template <class Cue>
@@ -60,7 +63,7 @@ Shot predict(const Cue& given, const py::object& cue_ball, const py::object& bal
 {
   const CuePlacement cue = placed(given, cue_ball, configuration);
   const std::vector<TableBall> others = tableBalls(balls);
-  return shotOf(withoutGil([&] { return predictShot(cue, configuration, others); }));
+  return shotOf(withoutGil([&] { return predictShot(cue, configuration, others); }, others));
 }
 
 /// The path sampled: times (N,), positions (N, 3) and phases (N,) as numpy arrays.

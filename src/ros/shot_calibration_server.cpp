@@ -8,6 +8,7 @@
 #include "billiard_shot_planner/io/calibration_overlay.hpp"
 #include "error_codes.hpp"
 #include "parameter_names.hpp"
+#include "request_fields.hpp"
 
 namespace billiard_shot_planner
 {
@@ -165,26 +166,28 @@ Expected<ObservedShot> ShotCalibrationServer::executedShot(const RecordShot::Req
   if (!cue)
     return cue.error();
   ObservedShot shot;
-  bool cue_ball_found = false;
-  for (const auto& [id, position] : balls)
+  BallOrigins origins;
+  for (std::size_t i = 0; i < balls.size(); ++i)
+  {
+    const auto& [id, position] = balls[i];
     if (id == CUE_BALL_ID)
     {
       cue.value().ball = position;
-      cue_ball_found = true;
+      origins.cue_ball = i;
+      continue;
     }
-    else
-    {
-      TableBall ball{id, {}};
-      ball.state.position = Eigen::Vector3d(position.x(), position.y(), 0.0);
-      shot.others.push_back(ball);
-    }
-  if (!cue_ball_found)
+    TableBall ball{id, {}};
+    ball.state.position = Eigen::Vector3d(position.x(), position.y(), 0.0);
+    shot.others.push_back(ball);
+    origins.others.push_back(i);
+  }
+  if (!origins.cue_ball)
     return invalidArgument("table.balls", "has no ball with id \"cue\": the cue ball's place before the strike");
   shot.cue = cue.value();
   // A shot the model cannot play (the cue misses its ball, balls overlap) would only fail the fit later.
   auto predicted = predictShot(shot.cue, access_.configuration(), shot.others);
   if (!predicted)
-    return predicted.error();
+    return inRequestTerms(predicted.error(), origins);
   return shot;
 }
 

@@ -11,6 +11,7 @@
 #include "error_codes.hpp"
 #include "parameter_names.hpp"
 #include "prediction_message.hpp"
+#include "request_fields.hpp"
 #include "trajectory_markers.hpp"
 #include "tuning.hpp"
 
@@ -515,17 +516,21 @@ bool ShotPredictorNode::answer(PredictShot::Request& request, PredictShot::Respo
   if (!cue)
     return fail(cue.error());
   std::vector<TableBall> others;
-  for (TableBall& ball : balls.value())
+  BallOrigins origins;
+  for (std::size_t i = 0; i < balls.value().size(); ++i)
   {
+    TableBall& ball = balls.value()[i];
     if (ball.id != CUE_BALL_ID)
     {
       others.push_back(ball);
+      origins.others.push_back(i);
       continue;
     }
     // The cue strikes a ball at rest: a tracked cue ball's small motion is the tracker's noise.
     if (Status status = settleAtRest(ball, settings_.planning.rest_speed, configuration.value().ball_radius); !status)
       return fail(status.error());
     cue.value().ball = ball.state.position.head<2>();
+    origins.cue_ball = i;
   }
   if (usesStroke(request))
   {
@@ -537,7 +542,7 @@ bool ShotPredictorNode::answer(PredictShot::Request& request, PredictShot::Respo
   }
   auto outcome = predictShot(cue.value(), configuration.value(), others);
   if (!outcome)
-    return fail(outcome.error());
+    return fail(inRequestTerms(outcome.error(), origins));
   response.success = true;
   response.message = "ok";
   response.error_code = errorCode(ErrorCode::SUCCESS);

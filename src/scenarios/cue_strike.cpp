@@ -140,18 +140,18 @@ Expected<Eigen::Vector3d> hitNormal(const Eigen::Vector3d& axis_point, const Eig
   const double b = c.dot(offset);
   const double discriminant = b * b - (offset.squaredNorm() - ball_radius * ball_radius);
   if (discriminant < 0.0)
-    return Error{ErrorKind::InvalidShot, "cue_pose",
+    return Error{ErrorKind::InvalidShot, "cue",
                  "the cue axis misses the ball (closest approach " +
                      formatNumber(std::sqrt(offset.squaredNorm() - b * b)) + " m from its centre)"};
   // The tip may touch the ball or be slightly into it from round-off (a hundredth of the radius).
   const double depth = ball_radius - offset.norm();
   if (depth > 0.01 * ball_radius)
-    return Error{ErrorKind::InvalidShot, "cue_pose",
+    return Error{ErrorKind::InvalidShot, "cue",
                  "the cue tip is inside the ball (" + formatNumber(offset.norm()) + " m from its centre, radius " +
                      formatNumber(ball_radius) + " m)"};
   const double distance = -b - std::sqrt(discriminant);
   if (distance < -0.01 * ball_radius)
-    return Error{ErrorKind::InvalidShot, "cue_pose", "the ball is behind the cue tip (the cue points away)"};
+    return Error{ErrorKind::InvalidShot, "cue", "the ball is behind the cue tip (the cue points away)"};
   return Eigen::Vector3d((axis_point + distance * c - ball_centre) / ball_radius);
 }
 

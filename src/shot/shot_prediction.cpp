@@ -91,17 +91,21 @@ Status applyOverride(ShotConfiguration& configuration, const std::string& name, 
 
 namespace
 {
-/// A table error in the request's names: the cue ball (balls[0]) is "ball_position", the others "table.balls[k]".
-Error inRequestTerms(Error error)
+/// A table error in the caller's terms: the cue ball (the table's balls[0]) is "cue.ball", its only input being its
+/// place; the others are "others[k]", as the caller listed them.
+Error inCallTerms(Error error)
 {
-  const std::string cue = "balls[0].";
-  if (error.field.rfind(cue, 0) == 0)
-    error.field = error.field == cue + "position" ? "ball_position" : "cue ball " + error.field.substr(cue.size());
+  const std::string cue_ball = "balls[0]";
+  if (error.field.rfind(cue_ball, 0) == 0)
+  {
+    const std::string rest = error.field.substr(cue_ball.size());
+    error.field = rest == ".position" ? "cue.ball" : "cue.ball" + rest;
+  }
   else if (error.field.rfind("balls[", 0) == 0)
   {
     const std::size_t close = error.field.find(']');
     const int index = std::stoi(error.field.substr(6, close - 6)) - 1;
-    error.field = "table.balls[" + std::to_string(index) + "]" + error.field.substr(close + 1);
+    error.field = "others[" + std::to_string(index) + "]" + error.field.substr(close + 1);
   }
   return error;
 }
@@ -132,7 +136,7 @@ Expected<TableTrajectory> moveBalls(const std::vector<TableBall>& balls, const S
   }
   auto table = simulateTable(balls, ball, c.table, motion, c.ball_contact);
   if (!table)
-    return inRequestTerms(table.error());
+    return inCallTerms(table.error());
   return table;
 }
 }  // namespace
@@ -140,9 +144,9 @@ Expected<TableTrajectory> moveBalls(const std::vector<TableBall>& balls, const S
 Expected<CueStrikeResult> strikeBall(const CuePlacement& cue, const ShotConfiguration& c,
                                      const std::vector<TableBall>& others)
 {
-  if (Status status = firstError(
-          {requireFinite(cue.tip, "cue_pose.position"), requireDirection(cue.direction, "cue_pose.orientation"),
-           requirePositive(cue.speed, "cue_speed"), requireFinite(cue.ball, "ball_position"), validate(c)});
+  if (Status status =
+          firstError({requireFinite(cue.tip, "cue.tip"), requireDirection(cue.direction, "cue.direction"),
+                      requirePositive(cue.speed, "cue.speed"), requireFinite(cue.ball, "cue.ball"), validate(c)});
       !status)
     return status.error();
   const Eigen::Vector3d centre(cue.ball.x(), cue.ball.y(), c.ball_radius);
@@ -156,7 +160,7 @@ Expected<CueStrikeResult> strikeBall(const CuePlacement& cue, const ShotConfigur
   auto struck =
       strikeOnTable(strike, tableBalls(cue.ball, c.ball_radius, others), 0, c.table, c.ball_contact, c.solver);
   if (!struck)
-    return inRequestTerms(struck.error());
+    return inCallTerms(struck.error());
   return struck;
 }
 
@@ -188,7 +192,7 @@ Expected<ShotOutcome> predictShotAfter(const CuePlacement& cue, CueStrikeResult 
   {
     Error error = table.error();
     if (error.field == "position")
-      error.field = "ball_position";  // the start of the trajectory is where the request put the ball
+      error.field = "cue.ball";  // the start of the trajectory is where the caller put the ball
     return error;
   }
   recordStrike(table.value(), 0, struck);

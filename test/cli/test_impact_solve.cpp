@@ -841,6 +841,10 @@ TEST(ImpactSolve, CalibrateBadInputNamesTheObservation)
   bad["shots"][0].erase("cue");
   expectField(bad, "shots[0].cue");
   bad = good;
+  // A ball listed before the cue ball overlapping it: the core's others[0] is the request's balls[0].
+  bad["shots"][0]["balls"] = {{{"id", "seven"}, {"position", {-0.6, 0.03}}}, good["shots"][0]["balls"][0]};
+  expectField(bad, "shots[0].balls[0].position");
+  bad = good;
   bad["fit"] = {"motion/colour"};
   expectField(bad, "fit[0]");
   bad = good;

@@ -183,7 +183,7 @@ TEST(FrozenShots, StrikeOfOtherBallsIsRefused)
   EXPECT_EQ(paired.error().field, "strike.touching_balls");
 }
 
-// Balls overlapping beyond the gap: the ball is named in the request's terms.
+// Balls overlapping beyond the gap: the ball is named by its place in the call's others.
 TEST(FrozenShots, OverlappingNeighbourIsNamed)
 {
   const Eigen::Vector2d cue_ball(-0.4, 0.1);
@@ -191,5 +191,5 @@ TEST(FrozenShots, OverlappingNeighbourIsNamed)
       bsp::predictShot(stroke(cue_ball, 10.0, 2.0), CONFIGURATION,
                        {ballAt("far", {0.8, 0.3}), ballAt("one", cue_ball + Eigen::Vector2d(1.9 * R, 0.0))});
   ASSERT_FALSE(struck.ok());
-  EXPECT_EQ(struck.error().field.rfind("table.balls[1]", 0), 0u) << struck.error().field;
+  EXPECT_EQ(struck.error().field.rfind("others[1]", 0), 0u) << struck.error().field;
 }

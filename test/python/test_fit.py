@@ -52,6 +52,10 @@ def test_bad_input_names_the_field():
         with pytest.raises(bsp.Error) as raised:
             bsp.fit_tracks(**kwargs)
         assert raised.value.field == field, kwargs
+    overlapping = {**good[0], "balls": {"two": (good[0]["cue_ball"][0] + 0.03, good[0]["cue_ball"][1])}}
+    with pytest.raises(bsp.Error) as raised:
+        bsp.fit_tracks([overlapping], ["motion/sliding_friction"])
+    assert raised.value.field == "shots[0].balls['two'].position"
     nan_track = good[0]["tracks"]["cue"].copy()
     nan_track[3, 1] = math.nan
     with pytest.raises(bsp.Error) as raised:

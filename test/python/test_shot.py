@@ -71,7 +71,27 @@ def test_a_ball_off_the_table_or_a_negative_speed_is_refused():
     with pytest.raises(bsp.Error) as raised:
         bsp.predict_shot(bsp.Stroke(speed=1.0), cue_ball=(5.0, 0.0))
     assert raised.value.code == "invalid_argument"
+    assert raised.value.field == "cue_ball"
     with pytest.raises(bsp.Error):
         bsp.predict_shot(bsp.Stroke(speed=-1.0), cue_ball=CUE)
     with pytest.raises(bsp.Error):
         bsp.predict_shot(bsp.Stroke(speed=1.0), cue_ball=CUE).ball("nine")
+
+
+def test_the_cores_errors_come_in_the_calls_names():
+    # Ball "two" overlaps "one" by a centimetre: named by its id, not by its place in the core's list.
+    with pytest.raises(bsp.Error) as raised:
+        bsp.predict_shot(bsp.Stroke(speed=1.0), CUE, balls={"one": (0.5, 0.3), "two": (0.5 + 0.047, 0.3)})
+    assert raised.value.field == "balls['two'].position"
+    # A cue whose axis passes 5 cm beside the ball: the cue as a whole.
+    beside = bsp.Cue(tip=(CUE[0] - 0.05, CUE[1] + 0.05 + 0.0286, 0.0286), direction=(1.0, 0.0, 0.0), speed=1.0)
+    with pytest.raises(bsp.Error) as raised:
+        bsp.predict_shot(beside, CUE)
+    assert raised.value.code == "invalid_shot" and raised.value.field == "cue"
+    # A configuration's field by its parameter name.
+    config = bsp.Configuration()
+    config["table/cushion_height"] = 0.05
+    config["ball_radius"] = 0.03
+    with pytest.raises(bsp.Error) as raised:
+        config["ball_radius"] = 0.02  # the cushion's nose would be above the ball
+    assert raised.value.field == "table/cushion_height"

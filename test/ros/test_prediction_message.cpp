@@ -5,6 +5,7 @@
 
 #include "parameter_names.hpp"
 #include "prediction_message.hpp"
+#include "request_fields.hpp"
 #include "shot_fixtures.hpp"
 
 namespace bsp = billiard_shot_planner;
@@ -53,6 +54,27 @@ TEST(ParameterNames, TheNodeNamesConfigurationPathsWithSlashes)
   d.table.cloth.eta2 = 0;
   EXPECT_EQ(bsp::namedAsParameter(bsp::validate(d)).error().field, "table/cloth/eta2");
   EXPECT_TRUE(bsp::namedAsParameter(bsp::validate(bsp::ShotConfiguration{})).ok());
+}
+
+// The core names a prediction's input by its place in the call; the node names it by the request's fields, with the
+// balls at their places in the request's table (the cue ball among them or given as ball_position).
+TEST(ParameterNames, TheCoresFieldsInTheRequestsNames)
+{
+  const bsp::BallOrigins cue_in_table{{0, 2}, 1};
+  const bsp::BallOrigins cue_given{{0, 1}, std::nullopt};
+  auto named = [](const std::string& field, const bsp::BallOrigins& origins) {
+    return bsp::inRequestTerms(bsp::Error{bsp::ErrorKind::InvalidArgument, field, ""}, origins).field;
+  };
+  EXPECT_EQ(named("cue.tip", cue_given), "cue_pose.position");
+  EXPECT_EQ(named("cue.direction", cue_given), "cue_pose.orientation");
+  EXPECT_EQ(named("cue.speed", cue_given), "cue_speed");
+  EXPECT_EQ(named("cue", cue_given), "cue_pose");
+  EXPECT_EQ(named("cue.ball", cue_given), "ball_position");
+  EXPECT_EQ(named("cue.ball", cue_in_table), "table.balls[1].position");
+  EXPECT_EQ(named("others[1].position", cue_in_table), "table.balls[2].position");
+  EXPECT_EQ(named("others[1].position", cue_given), "table.balls[1].position");
+  EXPECT_EQ(named("table.cloth.friction", cue_given), "table/cloth/friction");
+  EXPECT_EQ(named("strike.other_balls", cue_given), "strike.other_balls");
 }
 
 // A cue ball frozen to a ball: the message lists every contact of the strike by name with its impulse, the ball the

@@ -87,8 +87,10 @@ Expected<CueStrikeResult> strikeBall(const CuePlacement& cue, const ShotConfigur
 
 /// The whole prediction: the hit point where the cue axis meets the ball, the strike by the multiple-impact
 /// engine, and the path of every ball on the table (`others`: the balls besides the cue ball, at rest or moving;
-/// none may be called CUE_BALL_ID). Pure function, thread-safe. Errors name the cue ball's fields as the request's
-/// ("ball_position") and the other balls as "table.balls[k]".
+/// none may be called CUE_BALL_ID). Pure function, thread-safe. Errors name the input by its place in the call: the
+/// cue's fields under "cue" ("cue.tip", "cue.direction", "cue.speed", "cue.ball" for the cue ball; "cue" for a cue
+/// that misses or points away from its ball), the other balls by their index in `others` ("others[2].position"), the
+/// configuration's fields by their paths ("table.cloth.friction"). Each front end maps them to its own names.
 Expected<ShotOutcome> predictShot(const CuePlacement& cue, const ShotConfiguration& configuration,
                                   const std::vector<TableBall>& others = {});
 
