@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Throughput of the Python batch API: simulate_many on random strokes (seeded) from the cue ball at the head spot
 on layouts of 1, 3 and 7 object balls, on 1 and 2 threads; shots a second, and the speed-up of two threads.
-The single-call path is timed too (predict_shot in a Python loop), to show what the batch saves.
+The single-call path is timed too (predict_shot in a Python loop), to show what the batch saves, and strike_many
+(the strikes alone, no paths) on the same strokes.
 
 Usage: PYTHONPATH=<the package> python3 bench/batch_throughput.py [shots]   (bench/NOTES.md, Python batches)
 """
@@ -45,6 +46,11 @@ def main():
         one = sorted(timed(lambda: bsp.simulate_many(rows, cue_ball, balls, threads=1)) for _ in range(3))[1]
         two = sorted(timed(lambda: bsp.simulate_many(rows, cue_ball, balls, threads=2)) for _ in range(3))[1]
         print(f"{count} | {n / loop:.0f} | {n / one:.0f} | {n / two:.0f} | {one / two:.2f}")
+    print("strike_many, strikes a second: 1 thread | 2 threads")
+    many = strokes(20 * n, seed=2)
+    one = sorted(timed(lambda: bsp.strike_many(many, cue_ball, LAYOUTS[1], threads=1)) for _ in range(3))[1]
+    two = sorted(timed(lambda: bsp.strike_many(many, cue_ball, LAYOUTS[1], threads=2)) for _ in range(3))[1]
+    print(f"{len(many) / one:.0f} | {len(many) / two:.0f}")
 
 
 if __name__ == "__main__":

@@ -41,6 +41,7 @@ from ._core import (  # noqa: E402
     predict_shot,
     simulate_many,
     strike,
+    strike_many,
     to_fastfiz,
     to_pooltool,
 )
@@ -69,6 +70,7 @@ __all__ = [
     "predict_shot",
     "simulate_many",
     "strike",
+    "strike_many",
     "to_fastfiz",
     "to_pooltool",
 ]

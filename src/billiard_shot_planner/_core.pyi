@@ -112,6 +112,13 @@ def simulate_many(
     configuration: Configuration = ...,
     threads: int = 0,
 ) -> dict[str, Any]: ...
+def strike_many(
+    strokes: npt.ArrayLike,
+    cue_ball: Sequence[float],
+    balls: Optional[Mapping[str, Sequence[float]]] = None,
+    configuration: Configuration = ...,
+    threads: int = 0,
+) -> dict[str, Any]: ...
 
 class Noise:
     """Execution noise: one standard deviation per stroke parameter (rad, rad, m/s, m, m)."""

@@ -96,7 +96,7 @@ RowOutcome simulateRow(const Stroke& stroke, const Layout& layout, const ShotCon
   auto shot = predictShot(cue.value(), configuration, layout.balls);
   if (!shot)
   {
-    row.error = shot.error();
+    row.error = inPythonTerms(shot.error(), layout.balls);
     return row;
   }
   row.velocity = shot.value().strike.velocity;
@@ -119,6 +119,92 @@ py::object errorsOf(const std::vector<RowOutcome>& rows)
   for (const RowOutcome& row : rows)
     errors.append(row.error ? errorObject(*row.error) : py::none());
   return std::move(errors);
+}
+
+/// A row's strike: the cue ball's velocities, each other ball's (zero where the strike did not move it), the flags.
+struct StrikeRow
+{
+  std::optional<Error> error;
+  CueStrikeResult strike;
+};
+
+StrikeRow strikeRow(const Stroke& stroke, const Layout& layout, const ShotConfiguration& configuration)
+{
+  StrikeRow row;
+  auto cue = placeStroke(stroke, layout.cue_ball, configuration.ball_radius);
+  if (!cue)
+  {
+    row.error = cue.error();
+    return row;
+  }
+  auto struck = strikeBall(cue.value(), configuration, layout.balls);
+  if (!struck)
+    row.error = inPythonTerms(struck.error(), layout.balls);
+  else
+    row.strike = std::move(struck).value();
+  return row;
+}
+
+/// Row i's vector in (N, 3) rows, NaN for a row that failed.
+void putRow(py::detail::unchecked_mutable_reference<double, 2>& out, py::ssize_t i, const Eigen::Vector3d& value,
+            bool known)
+{
+  for (py::ssize_t j = 0; j < 3; ++j)
+    out(i, j) = known ? value(j) : std::numeric_limits<double>::quiet_NaN();
+}
+
+py::dict strikeMany(const py::handle& strokes_given, const py::handle& cue_ball, const py::object& balls,
+                    const ShotConfiguration& configuration, int threads)
+{
+  const std::vector<Stroke> strokes = strokesOf(strokes_given);
+  const Layout layout = layoutOf(cue_ball, balls);
+  const int workers = threadCount(threads, strokes.size());
+  std::vector<StrikeRow> rows(strokes.size());
+  {
+    py::gil_scoped_release release;
+    forEachRow(strokes.size(), workers, [&](std::size_t i) { rows[i] = strikeRow(strokes[i], layout, configuration); });
+  }
+  const auto n = static_cast<py::ssize_t>(rows.size());
+  const auto others = static_cast<py::ssize_t>(layout.balls.size());
+  py::array_t<double> velocity({n, py::ssize_t{3}}), angular_velocity({n, py::ssize_t{3}});
+  py::array_t<double> other_velocity({n, others, py::ssize_t{3}}), other_angular_velocity({n, others, py::ssize_t{3}});
+  py::array_t<bool> miscue(n), leaves_cloth(n);
+  auto v = velocity.mutable_unchecked<2>();
+  auto w = angular_velocity.mutable_unchecked<2>();
+  auto ov = other_velocity.mutable_unchecked<3>();
+  auto ow = other_angular_velocity.mutable_unchecked<3>();
+  auto m = miscue.mutable_unchecked<1>();
+  auto l = leaves_cloth.mutable_unchecked<1>();
+  py::list errors;
+  for (py::ssize_t i = 0; i < n; ++i)
+  {
+    const StrikeRow& row = rows[static_cast<std::size_t>(i)];
+    const bool known = !row.error;
+    putRow(v, i, row.strike.velocity, known);
+    putRow(w, i, row.strike.angular_velocity, known);
+    for (py::ssize_t k = 0; k < others; ++k)
+      for (py::ssize_t j = 0; j < 3; ++j)
+        ov(i, k, j) = ow(i, k, j) = known ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+    for (const StruckBall& moved : row.strike.other_balls)  // numbered from 1: 0 is the cue ball
+      for (py::ssize_t j = 0; moved.ball >= 1 && moved.ball <= layout.balls.size() && j < 3; ++j)
+      {
+        ov(i, static_cast<py::ssize_t>(moved.ball) - 1, j) = moved.velocity(j);
+        ow(i, static_cast<py::ssize_t>(moved.ball) - 1, j) = moved.angular_velocity(j);
+      }
+    m(i) = known && row.strike.miscue;
+    l(i) = known && row.strike.leaves_cloth;
+    errors.append(row.error ? errorObject(*row.error) : py::none());
+  }
+  py::dict answer;
+  answer["ids"] = layout.ids();
+  answer["velocity"] = velocity;
+  answer["angular_velocity"] = angular_velocity;
+  answer["other_velocity"] = other_velocity;
+  answer["other_angular_velocity"] = other_angular_velocity;
+  answer["miscue"] = miscue;
+  answer["leaves_cloth"] = leaves_cloth;
+  answer["error"] = errors;
+  return answer;
 }
 
 py::dict simulateMany(const py::handle& strokes_given, const py::handle& cue_ball, const py::object& balls,
@@ -180,6 +266,13 @@ speed, a, b), on `threads` threads (0: one per core) with the GIL released. Retu
 balls' order, the cue ball first), velocity and angular_velocity (N, 3) of the cue ball after the strike,
 final_position (N, B, 3) and pocket (N, B; -1: not pocketed) of every ball, and error (N: None, or the row's Error;
 its row's numbers are NaN and -1). A bad array, layout or thread count raises Error.)");
+  module.def("strike_many", &strikeMany, py::arg("strokes"), py::arg("cue_ball"), py::arg("balls") = py::none(),
+             py::arg("configuration") = ShotConfiguration{}, py::arg("threads") = 0,
+             R"(Many strikes on one layout: strike() for each row of `strokes` (an (N, 5) array of phi, theta, speed,
+a, b), on `threads` threads (0: one per core) with the GIL released; the balls' paths are not computed. Returns a dict
+of numpy arrays: ids, velocity and angular_velocity (N, 3) of the cue ball right after the strike, other_velocity and
+other_angular_velocity (N, B-1, 3) of the other balls (zero for a ball the strike did not touch: only balls frozen
+to the cue ball move in it), miscue and leaves_cloth (N,), and error (N: None, or the row's Error; its numbers NaN).)");
 }
 
 }  // namespace billiard_shot_planner::python

@@ -73,3 +73,26 @@ def test_a_bad_batch_raises_naming_the_field(kwargs, field):
 def test_an_empty_batch_is_empty():
     batch = bsp.simulate_many(np.zeros((0, 5)), cue_ball=CUE)
     assert batch["velocity"].shape == (0, 3) and batch["error"] == []
+
+
+def test_every_strike_row_is_the_single_strike():
+    # Ball "one" frozen to the cue ball along +x: strokes towards it move both in one impact.
+    frozen = {"one": (CUE[0] + 2 * 0.0286, CUE[1]), "two": (-0.5, -0.3)}
+    rows = strokes(16, seed=3)
+    rows[1] = (0.0, 0.0, 2.0, 0.0, 0.0)  # straight into the frozen ball
+    rows[2] = (0.0, 0.0, 2.0, 5.0, 0.0)  # off the ball: a row's own error
+    batch = bsp.strike_many(rows, cue_ball=CUE, balls=frozen, threads=2)
+    assert batch["ids"] == ["cue", "one", "two"]
+    assert batch["other_velocity"].shape == (len(rows), 2, 3)
+    for i, row in enumerate(rows):
+        if i == 2:
+            assert batch["error"][i].field == "a" and np.all(np.isnan(batch["velocity"][i]))
+            continue
+        single = bsp.strike(bsp.Stroke(*row), cue_ball=CUE, balls=frozen)
+        assert batch["error"][i] is None
+        assert np.array_equal(batch["velocity"][i], single.velocity)
+        assert np.array_equal(batch["angular_velocity"][i], single.angular_velocity)
+        assert batch["miscue"][i] == single.miscue
+    # The frozen ball moves off along the line of centres, faster than the cue ball; the far one does not move.
+    assert batch["other_velocity"][1, 0, 0] > batch["velocity"][1, 0] > 0.0
+    assert np.all(np.delete(batch["other_velocity"][:, 1], 2, axis=0) == 0.0)
