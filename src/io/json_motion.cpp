@@ -4,6 +4,7 @@
 #include "billiard_shot_planner/io/table_yaml.hpp"
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
+#include "billiard_shot_planner/shot/configuration_fields.hpp"
 #include "json_fields.hpp"
 #include "json_motion.hpp"
 
@@ -142,10 +143,11 @@ Expected<MotionParameters> motionParameters(const json& request, const SolverOpt
   }
   if (request.contains("rolling_model"))
   {
-    const json& model = request.at("rolling_model");
-    if (model != "paper" && model != "pooltool")
-      return invalidArgument("rolling_model", "must be \"paper\" or \"pooltool\"");
-    p.rolling_model = model == "paper" ? RollingModel::Paper : RollingModel::Pooltool;
+    const json& given = request.at("rolling_model");
+    auto model = rollingModelNamed(given.is_string() ? given.get<std::string>() : given.dump(), "rolling_model");
+    if (!model)
+      return model.error();
+    p.rolling_model = model.value();
   }
   return p;
 }

@@ -1,6 +1,7 @@
 #include "billiard_shot_planner/io/table_yaml.hpp"
 
 #include "billiard_shot_planner/core/validation.hpp"
+#include "billiard_shot_planner/shot/configuration_fields.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -82,17 +83,17 @@ Status readSurface(const YAML::Node& node, const std::string& key, SurfaceContac
                      node[key]["law"] ? readLaw(node[key]["law"], prefix + "law", surface.normal_law) : Status{}});
 }
 
-/// A choice between two names; anything else is refused.
-template <class Choice>
-Status readChoice(const YAML::Node& node, const std::string& key, std::pair<const char*, Choice> first,
-                  std::pair<const char*, Choice> second, Choice& value, const std::string& prefix)
+/// A choice by name (`named`: the configuration's own names and their check); absent keeps `value`.
+template <class Choice, class Named>
+Status readChoice(const YAML::Node& node, const std::string& key, const Named& named, Choice& value,
+                  const std::string& prefix)
 {
   if (!node[key])
     return {};
-  const std::string chosen = node[key].IsScalar() ? node[key].Scalar() : "";
-  if (chosen != first.first && chosen != second.first)
-    return invalidArgument(prefix + key, std::string("must be ") + first.first + " or " + second.first);
-  value = chosen == first.first ? first.second : second.second;
+  auto chosen = named(node[key].IsScalar() ? node[key].Scalar() : "", prefix + key);
+  if (!chosen)
+    return chosen.error();
+  value = chosen.value();
   return {};
 }
 
@@ -120,8 +121,7 @@ Status readBallContact(const YAML::Node& root, BallContactSettings& contact)
        readNumber(node, "friction", contact.ball_ball.friction, "ball_ball."),
        readNumber(node, "eta2", contact.ball_ball.eta2, "ball_ball."),
        readNumber(node, "cloth_stiffness_ratio", contact.stiffness_ratio, "ball_ball."),
-       readChoice(node, "friction_model", std::pair{"alciatore", BallBallFriction::Alciatore},
-                  std::pair{"constant", BallBallFriction::Constant}, contact.friction_model, "ball_ball."),
+       readChoice(node, "friction_model", ballBallFrictionNamed, contact.friction_model, "ball_ball."),
        node["law"] ? readLaw(node["law"], "ball_ball.law", contact.ball_ball.normal_law) : Status{},
        validate(contact.ball_ball, "ball_ball"),
        requirePositive(contact.stiffness_ratio, "ball_ball.cloth_stiffness_ratio")});
@@ -138,8 +138,7 @@ Status readMotion(const YAML::Node& root, MotionParameters& motion)
        readNumber(node, "sliding_friction", motion.sliding_friction, "motion."),
        readNumber(node, "rolling_friction", motion.rolling_friction, "motion."),
        readNumber(node, "spinning_friction", motion.spinning_friction, "motion."),
-       readChoice(node, "rolling_model", std::pair{"paper", RollingModel::Paper},
-                  std::pair{"pooltool", RollingModel::Pooltool}, motion.rolling_model, "motion."),
+       readChoice(node, "rolling_model", rollingModelNamed, motion.rolling_model, "motion."),
        requirePositive(motion.sliding_friction, "motion.sliding_friction"),
        requirePositive(motion.rolling_friction, "motion.rolling_friction"),
        requirePositive(motion.spinning_friction, "motion.spinning_friction")});

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "billiard_shot_planner/shot/configuration_fields.hpp"
 #include "parameter_names.hpp"
 
 namespace billiard_shot_planner
@@ -44,7 +45,7 @@ ShotPredictorConfig toTuning(const ShotConfiguration& configuration)
   ShotPredictorConfig tuning = ShotPredictorConfig::__getDefault__();
   // A tuning number that is no parameter keeps its default here; applyTuning() refuses it (test_tuning.cpp).
   static_cast<void>(visitNumbers(c, tuning, [](double& tuned, double value) { tuned = value; }));
-  tuning.motion_rolling_model = c.motion.rolling_model == RollingModel::Paper ? "paper" : "pooltool";
+  tuning.motion_rolling_model = nameOf(c.motion.rolling_model);
   tuning.motion_planar = c.motion.planar;
   return tuning;
 }
@@ -54,9 +55,10 @@ Expected<ShotConfiguration> applyTuning(ShotConfiguration configuration, const S
   ShotPredictorConfig t = tuning;
   if (Status status = visitNumbers(configuration, t, [](double tuned, double& value) { value = tuned; }); !status)
     return status.error();
-  if (t.motion_rolling_model != "paper" && t.motion_rolling_model != "pooltool")
-    return invalidArgument("motion/rolling_model", "must be paper or pooltool");
-  configuration.motion.rolling_model = t.motion_rolling_model == "paper" ? RollingModel::Paper : RollingModel::Pooltool;
+  auto model = rollingModelNamed(t.motion_rolling_model, "motion/rolling_model");
+  if (!model)
+    return model.error();
+  configuration.motion.rolling_model = model.value();
   configuration.motion.planar = t.motion_planar;
   if (Status status = namedAsParameter(validate(configuration)); !status)
     return status.error();

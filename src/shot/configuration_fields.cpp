@@ -39,6 +39,28 @@ Status notAnOption(const std::string& path, const std::string& value, const std:
   return invalidArgument(path, "must be one of " + listed(options) + ", got \"" + value + "\"");
 }
 
+template <class Enum>
+std::string nameIn(const ChoiceNames<Enum>& names, Enum value)
+{
+  for (const auto& [name, option] : names)
+    if (option == value)
+      return name;
+  return {};
+}
+
+template <class Enum>
+Expected<Enum> namedIn(const ChoiceNames<Enum>& names, const std::string& name, const std::string& field)
+{
+  std::vector<std::string> options;
+  for (const auto& [known, option] : names)
+  {
+    if (known == name)
+      return option;
+    options.push_back(known);
+  }
+  return notAnOption(field, name, options).error();
+}
+
 /// Offers an enumeration to the visitor by name and takes back the name it leaves.
 template <class Enum>
 Status visitEnum(ConfigurationVisitor& visitor, const std::string& path, const ChoiceNames<Enum>& names, Enum& value)
@@ -208,6 +230,26 @@ Status applyChoice(ShotConfiguration& configuration, const std::string& name, co
     return status;
   configuration = changed;
   return {};
+}
+
+std::string nameOf(RollingModel model)
+{
+  return nameIn(rollingModels(), model);
+}
+
+std::string nameOf(BallBallFriction model)
+{
+  return nameIn(ballBallFrictionModels(), model);
+}
+
+Expected<RollingModel> rollingModelNamed(const std::string& name, const std::string& field)
+{
+  return namedIn(rollingModels(), name, field);
+}
+
+Expected<BallBallFriction> ballBallFrictionNamed(const std::string& name, const std::string& field)
+{
+  return namedIn(ballBallFrictionModels(), name, field);
 }
 
 bool isConfigurationPath(const std::string& path)

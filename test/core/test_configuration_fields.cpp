@@ -91,3 +91,15 @@ TEST(ConfigurationFields, PathsOfAConfigurationAndOfOtherInput)
   EXPECT_EQ(bsp::parameterNameOfField("table.cloth.friction"), "table/cloth/friction");
   EXPECT_EQ(bsp::parameterNameOfField("shots[0].tracks.cue"), "shots[0].tracks.cue");
 }
+
+TEST(ConfigurationFields, EnumerationsHaveOneSpellingEachWay)
+{
+  for (auto model : {bsp::RollingModel::Paper, bsp::RollingModel::Pooltool})
+    EXPECT_EQ(bsp::rollingModelNamed(bsp::nameOf(model), "m").value(), model);
+  for (auto model : {bsp::BallBallFriction::Alciatore, bsp::BallBallFriction::Constant})
+    EXPECT_EQ(bsp::ballBallFrictionNamed(bsp::nameOf(model), "m").value(), model);
+  EXPECT_EQ(bsp::nameOf(bsp::RollingModel::Pooltool), "pooltool");
+  const auto wrong = bsp::rollingModelNamed("leckie", "motion.rolling_model");
+  ASSERT_FALSE(wrong.ok());
+  EXPECT_EQ(wrong.error().field, "motion.rolling_model");
+}

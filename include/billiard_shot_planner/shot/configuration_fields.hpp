@@ -53,6 +53,13 @@ std::vector<NamedChoice> configurationChoices(ShotConfiguration configuration);
 /// keeps it when the configuration stays valid. Errors: an unknown name, a value that is not an option.
 Status applyChoice(ShotConfiguration& configuration, const std::string& name, const std::string& value);
 
+/// The names the configuration gives the rolling models ("paper", "pooltool") and the ball–ball friction models
+/// ("alciatore", "constant"), and back: the one place they are spelt. Errors name `field` and list the names.
+std::string nameOf(RollingModel model);
+std::string nameOf(BallBallFriction model);
+Expected<RollingModel> rollingModelNamed(const std::string& name, const std::string& field);
+Expected<BallBallFriction> ballBallFrictionNamed(const std::string& name, const std::string& field);
+
 /// "table.cloth.friction" → "table/cloth/friction": a field's path as the parameters' name, which the ROS node and
 /// the Python API share (each front end maps the core's paths to its own names at its boundary).
 inline std::string parameterName(std::string path)
