@@ -10,6 +10,7 @@ add_library(${PROJECT_NAME}_python MODULE
   src/python/batch_binding.cpp
   src/python/configuration_binding.cpp
   src/python/fit_binding.cpp
+  src/python/impact_binding.cpp
   src/python/layout.cpp
   src/python/module.cpp
   src/python/plan_binding.cpp

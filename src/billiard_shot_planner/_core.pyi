@@ -218,3 +218,24 @@ def fit_tracks(
     threads: int = 1,
     robust_loss_sigmas: float = 0.0,
 ) -> TrackFit: ...
+
+class ImpactResult:
+    velocity: npt.NDArray[np.float64]
+    normal_impulses: npt.NDArray[np.float64]
+    tangential_impulses: npt.NDArray[np.float64]
+    ends_of_compression: list[int]
+    initially_slipping: list[bool]
+    states: list[list[str]]
+    events: list[Tuple[str, str, float]]
+    initial_kinetic_energy: float
+    final_kinetic_energy: float
+    converged: bool
+
+def multiple_impact(
+    mass_matrix: npt.ArrayLike,
+    velocity: npt.ArrayLike,
+    contacts: Sequence[Mapping[str, Any]],
+    relative_tolerance: float = 1e-12,
+    absolute_tolerance: float = 1e-14,
+    max_seconds: float = 10.0,
+) -> ImpactResult: ...

@@ -5,6 +5,7 @@
 #include "batch_binding.hpp"
 #include "configuration_binding.hpp"
 #include "fit_binding.hpp"
+#include "impact_binding.hpp"
 #include "plan_binding.hpp"
 #include "python_errors.hpp"
 #include "shot_binding.hpp"
@@ -18,4 +19,5 @@ PYBIND11_MODULE(_core, module)
   billiard_shot_planner::python::bindBatches(module);
   billiard_shot_planner::python::bindPlanning(module);
   billiard_shot_planner::python::bindFits(module);
+  billiard_shot_planner::python::bindImpacts(module);
 }

@@ -120,6 +120,23 @@ def call(entry, rng, config):
         path = shot.ball("cue")
         path.sample(number(rng))
         path.position_at(number(rng))
+    elif entry == "multiple_impact":
+        d = int(rng.integers(1, 5))
+        mass = anything(rng) if spoilt(rng) else np.diag(rng.uniform(0.1, 3.0, d))
+        velocity = anything(rng) if spoilt(rng) else rng.normal(size=d)
+        contacts = []
+        for k in range(int(rng.integers(0 if spoilt(rng) else 1, 4))):
+            contact = {"normal": anything(rng) if spoilt(rng) else rng.normal(size=d),
+                       "restitution": number(rng) if spoilt(rng) else float(rng.uniform(0, 1)),
+                       "stiffness": number(rng) if spoilt(rng) else float(rng.uniform(0.1, 10))}
+            if rng.random() < 0.5:
+                contact["friction"] = number(rng) if spoilt(rng) else float(rng.uniform(0, 1))
+                contact["tangent"] = anything(rng) if spoilt(rng) else rng.normal(size=(2, d))
+            if rng.random() < 0.3:
+                contact["normal_law"] = anything(rng) if spoilt(rng) else {"type": "elastic_plastic",
+                                                                            "yield_speed": float(rng.uniform(0.1, 3))}
+            contacts.append(contact)
+        bsp.multiple_impact(mass, velocity, contacts if not spoilt(rng) else anything(rng), max_seconds=0.5)
     elif entry == "fit_tracks":
         times = np.sort(rng.uniform(0.0, 1.0, int(rng.integers(2, 8))))
         track = np.column_stack([times, rng.uniform(-1, 1, times.size), rng.uniform(-0.5, 0.5, times.size)])
@@ -135,7 +152,7 @@ def call(entry, rng, config):
 
 
 ENTRIES = ["strike", "predict_shot", "cue", "simulate_many", "plan_shot", "configuration", "load", "converters",
-           "sample", "fit_tracks"]
+           "sample", "fit_tracks", "multiple_impact"]
 
 
 def main(seed, rounds):
