@@ -84,19 +84,28 @@ struct RowOutcome
   std::vector<int> pockets;
 };
 
+/// A row's stroke placed at the cue ball and `solve`d there; either's error in the Python call's names.
+template <class Solve>
+auto solvedRow(const Stroke& stroke, const Layout& layout, const ShotConfiguration& configuration, const Solve& solve)
+    -> decltype(solve(CuePlacement{}))
+{
+  auto cue = placeStroke(stroke, layout.cue_ball, configuration.ball_radius);
+  if (!cue)
+    return cue.error();
+  auto solved = solve(cue.value());
+  if (!solved)
+    return inPythonTerms(solved.error(), layout.balls);
+  return solved;
+}
+
 RowOutcome simulateRow(const Stroke& stroke, const Layout& layout, const ShotConfiguration& configuration)
 {
   RowOutcome row;
-  auto cue = placeStroke(stroke, layout.cue_ball, configuration.ball_radius);
-  if (!cue)
-  {
-    row.error = cue.error();
-    return row;
-  }
-  auto shot = predictShot(cue.value(), configuration, layout.balls);
+  const auto shot = solvedRow(stroke, layout, configuration,
+                              [&](const CuePlacement& cue) { return predictShot(cue, configuration, layout.balls); });
   if (!shot)
   {
-    row.error = inPythonTerms(shot.error(), layout.balls);
+    row.error = shot.error();
     return row;
   }
   row.velocity = shot.value().strike.velocity;
@@ -131,15 +140,10 @@ struct StrikeRow
 StrikeRow strikeRow(const Stroke& stroke, const Layout& layout, const ShotConfiguration& configuration)
 {
   StrikeRow row;
-  auto cue = placeStroke(stroke, layout.cue_ball, configuration.ball_radius);
-  if (!cue)
-  {
-    row.error = cue.error();
-    return row;
-  }
-  auto struck = strikeBall(cue.value(), configuration, layout.balls);
+  auto struck = solvedRow(stroke, layout, configuration,
+                          [&](const CuePlacement& cue) { return strikeBall(cue, configuration, layout.balls); });
   if (!struck)
-    row.error = inPythonTerms(struck.error(), layout.balls);
+    row.error = struck.error();
   else
     row.strike = std::move(struck).value();
   return row;
