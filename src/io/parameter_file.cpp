@@ -74,8 +74,6 @@ public:
     }
     pockets = read;
   }
-  Status status() const override { return first_error_; }
-
   const std::set<std::string>& visited() const { return visited_; }
 
 private:
@@ -117,16 +115,9 @@ private:
     return at(node[parts[i]], parts, i + 1);
   }
 
-  void fail(Status status)
-  {
-    if (first_error_)
-      first_error_ = std::move(status);
-  }
-
   const YAML::Node root_;
   const Table base_table_;
   std::set<std::string> visited_;
-  Status first_error_;
 };
 
 /// The first key under `node` (at `path`) that no field of the configuration has.

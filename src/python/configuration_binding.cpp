@@ -112,8 +112,6 @@ public:
       fail(invalidArgument(parameterName(path), "must be a list of (x, y, radius)"));
     }
   }
-  Status status() const override { return first_error_; }
-
   /// The first key of the dict that no field has.
   Status everyKeyUsed() const
   {
@@ -134,15 +132,8 @@ private:
     used_.insert(name);
     return fields_[py::str(name)];
   }
-  void fail(Status status)
-  {
-    if (first_error_)
-      first_error_ = std::move(status);
-  }
-
   py::dict fields_;
   std::set<std::string> used_;
-  Status first_error_;
 };
 
 /// The value, or its error raised with the field named as the parameter ("table/cloth/friction").

@@ -55,27 +55,19 @@ class ParameterReader final : public ConfigurationVisitor
 public:
   explicit ParameterReader(ParameterTree& parameters) : parameters_(parameters) {}
 
-  void number(const std::string& path, double& value) override { keep(parameters_.read(parameterName(path), value)); }
-  void flag(const std::string& path, bool& value) override { keep(parameters_.read(parameterName(path), value)); }
+  void number(const std::string& path, double& value) override { fail(parameters_.read(parameterName(path), value)); }
+  void flag(const std::string& path, bool& value) override { fail(parameters_.read(parameterName(path), value)); }
   void choice(const std::string& path, std::string& value, const std::vector<std::string>& /*options*/) override
   {
-    keep(parameters_.read(parameterName(path), value));
+    fail(parameters_.read(parameterName(path), value));
   }
   void pockets(const std::string& path, std::vector<Pocket>& pockets, const Table& table) override
   {
-    keep(readPockets(parameters_, parameterName(path), pockets, table));
+    fail(readPockets(parameters_, parameterName(path), pockets, table));
   }
-  Status status() const override { return first_error_; }
 
 private:
-  void keep(Status status)
-  {
-    if (first_error_ && !status)
-      first_error_ = std::move(status);
-  }
-
   ParameterTree& parameters_;
-  Status first_error_;
 };
 
 /// Lists each field of the configuration under its parameter's name: numbers as numbers, the rest as text.

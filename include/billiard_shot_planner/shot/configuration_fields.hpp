@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "billiard_shot_planner/core/expected.hpp"
@@ -29,7 +30,18 @@ public:
   /// ones out for the size it read (sixPockets).
   virtual void pockets(const std::string& path, std::vector<Pocket>& pockets, const Table& table) = 0;
   /// The visitor's first error, once it has failed: the walk stops and returns it.
-  virtual Status status() const { return {}; }
+  Status status() const { return first_error_; }
+
+protected:
+  /// Keeps the first failure a visitor meets (the later ones follow from it); success changes nothing.
+  void fail(Status status)
+  {
+    if (first_error_ && !status)
+      first_error_ = std::move(status);
+  }
+
+private:
+  Status first_error_;
 };
 
 /// Calls the visitor for every field of the configuration: the numbers (numericParameters' names), the flags, the
