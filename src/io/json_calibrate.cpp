@@ -6,6 +6,7 @@
 
 #include "billiard_shot_planner/calibration/fit_parameter_bounds.hpp"
 #include "billiard_shot_planner/calibration/track_fit.hpp"
+#include "billiard_shot_planner/core/error_fields.hpp"
 #include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/io/calibration_overlay.hpp"
 #include "billiard_shot_planner/planning/stroke.hpp"
@@ -134,33 +135,30 @@ Expected<ObservedShot> observedShot(const json& shot, std::size_t k, double radi
 
 /// The core's name of a shot's input ("cue.ball", "others[2].position", "tracks.cue[3].t") in the request's: the
 /// balls at their places in the shot's "balls", the cue ball's track under its own id, the cue's fields as "cue".
-std::string shotField(const std::string& rest, const CueBallOfShot& cue_ball)
+std::string shotField(const std::string& field, const CueBallOfShot& cue_ball)
 {
-  const std::string cue_track = std::string("tracks.") + CUE_BALL_ID;
-  if (rest.rfind("cue.ball", 0) == 0)
-    return "balls[" + std::to_string(cue_ball.index) + "]" + (rest.size() > 8 ? rest.substr(8) : ".position");
-  if (rest.rfind("cue", 0) == 0)
+  if (const auto rest = restUnder(field, "cue.ball"))
+    return "balls[" + std::to_string(cue_ball.index) + "]" + (rest->empty() ? ".position" : *rest);
+  if (restUnder(field, "cue"))
     return "cue";
-  if (rest.rfind("others[", 0) == 0)
+  if (const auto other = elementOf(field, "others"))
   {
-    const std::size_t close = rest.find(']');
-    const std::size_t j = std::stoul(rest.substr(7, close - 7));
-    return "balls[" + std::to_string(j < cue_ball.index ? j : j + 1) + "]" + rest.substr(close + 1);
+    const std::size_t j = other->index;
+    return "balls[" + std::to_string(j < cue_ball.index ? j : j + 1) + "]" + other->rest;
   }
-  if (rest.rfind(cue_track, 0) == 0 && (rest.size() == cue_track.size() || rest[cue_track.size()] == '['))
-    return "tracks." + cue_ball.id + rest.substr(cue_track.size());
-  return rest;
+  if (const auto rest = restUnder(field, std::string("tracks.") + CUE_BALL_ID))
+    return "tracks." + cue_ball.id + *rest;
+  return field;
 }
 
 /// A fit's error in the request's names: a shot's input as shotField(), parameters with '/'.
 Error inRequestTerms(Error error, const std::vector<CueBallOfShot>& cue_balls)
 {
-  if (error.field.rfind("shots[", 0) == 0)
+  if (const auto shot = elementOf(error.field, "shots"))
   {
-    const std::size_t close = error.field.find(']');
-    const std::size_t k = std::stoul(error.field.substr(6, close - 6));
-    if (k < cue_balls.size() && close + 1 < error.field.size() && error.field[close + 1] == '.')
-      error.field = error.field.substr(0, close + 2) + shotField(error.field.substr(close + 2), cue_balls[k]);
+    if (shot->index < cue_balls.size() && shot->rest.size() > 1 && shot->rest.front() == '.')
+      error.field =
+          "shots[" + std::to_string(shot->index) + "]." + shotField(shot->rest.substr(1), cue_balls[shot->index]);
   }
   else if (error.field == "position_sigma")
     error.field = "position_noise";

@@ -10,6 +10,7 @@
 
 #include "billiard_shot_planner/calibration/fit_parameter_bounds.hpp"
 #include "billiard_shot_planner/calibration/track_fit.hpp"
+#include "billiard_shot_planner/core/error_fields.hpp"
 #include "billiard_shot_planner/io/calibration_overlay.hpp"
 #include "billiard_shot_planner/planning/stroke.hpp"
 #include "billiard_shot_planner/shot/configuration_fields.hpp"
@@ -94,16 +95,14 @@ ObservedShot observedShot(const py::handle& given, const ShotConfiguration& conf
 /// parameter as the parameters are named.
 Error inCallTerms(Error error, const std::vector<ObservedShot>& shots)
 {
-  const std::size_t close = error.field.find(']');
-  if (error.field.rfind("shots[", 0) != 0 || close == std::string::npos || close + 1 >= error.field.size())
+  const auto shot = elementOf(error.field, "shots");
+  if (!shot || shot->rest.size() < 2 || shot->rest.front() != '.')
     return inPythonTerms(error, {});
-  const std::size_t k = std::stoul(error.field.substr(6, close - 6));
-  if (k >= shots.size())
+  if (shot->index >= shots.size())
     return error;
-  const std::string shot = error.field.substr(0, close + 2);  // "shots[0]."
-  error.field = error.field.substr(close + 2);
-  error = inPythonTerms(error, shots[k].others);
-  error.field = shot + error.field;
+  error.field = shot->rest.substr(1);
+  error = inPythonTerms(error, shots[shot->index].others);
+  error.field = "shots[" + std::to_string(shot->index) + "]." + error.field;
   return error;
 }
 

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "billiard_shot_planner/core/error_fields.hpp"
 #include "billiard_shot_planner/shot/configuration_fields.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
 #include "python_errors.hpp"
@@ -79,16 +80,12 @@ Layout layoutOf(const py::handle& cue_ball, const py::object& balls)
 
 Error inPythonTerms(Error error, const std::vector<TableBall>& others)
 {
-  const std::string cue_ball = "cue.ball";
-  const std::string other = "others[";
-  if (error.field.rfind(cue_ball, 0) == 0)
-    error.field = "cue_ball" + error.field.substr(cue_ball.size());
-  else if (error.field.rfind(other, 0) == 0)
+  if (const auto rest = restUnder(error.field, "cue.ball"))
+    error.field = "cue_ball" + *rest;
+  else if (const auto other = elementOf(error.field, "others"))
   {
-    const std::size_t close = error.field.find(']');
-    const std::size_t k = std::stoul(error.field.substr(other.size(), close - other.size()));
-    if (k < others.size())
-      error.field = "balls['" + others[k].id + "']" + error.field.substr(close + 1);
+    if (other->index < others.size())
+      error.field = "balls['" + others[other->index].id + "']" + other->rest;
   }
   else
     error.field = parameterNameOfField(error.field);

@@ -1,4 +1,5 @@
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
+#include "billiard_shot_planner/core/error_fields.hpp"
 #include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/motion/table_strike.hpp"
 #include "billiard_shot_planner/shot/configuration_fields.hpp"
@@ -95,18 +96,11 @@ namespace
 /// place; the others are "others[k]", as the caller listed them.
 Error inCallTerms(Error error)
 {
-  const std::string cue_ball = "balls[0]";
-  if (error.field.rfind(cue_ball, 0) == 0)
-  {
-    const std::string rest = error.field.substr(cue_ball.size());
-    error.field = rest == ".position" ? "cue.ball" : "cue.ball" + rest;
-  }
-  else if (error.field.rfind("balls[", 0) == 0)
-  {
-    const std::size_t close = error.field.find(']');
-    const int index = std::stoi(error.field.substr(6, close - 6)) - 1;
-    error.field = "others[" + std::to_string(index) + "]" + error.field.substr(close + 1);
-  }
+  const auto ball = elementOf(error.field, "balls");
+  if (ball && ball->index == 0)
+    error.field = ball->rest == ".position" ? "cue.ball" : "cue.ball" + ball->rest;
+  else if (ball)
+    error.field = "others[" + std::to_string(ball->index - 1) + "]" + ball->rest;
   return error;
 }
 
