@@ -27,17 +27,10 @@ constexpr int MAX_THREADS = 256;
 /// The strokes of a batch: an (N, 5) array of phi, theta, speed, a, b (this package's convention).
 std::vector<Stroke> strokesOf(const py::handle& given)
 {
-  py::array_t<double, py::array::c_style | py::array::forcecast> array;
-  try
-  {
-    array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(given);
-  }
-  catch (const py::error_already_set&)
-  {
-    array = {};
-  }
-  if (!array || array.ndim() != 2 || array.shape(1) != 5)
-    raise(invalidArgument("strokes", "must be an (N, 5) array of phi, theta, speed, a, b"));
+  const char* const what = "must be an (N, 5) array of phi, theta, speed, a, b";
+  const py::array_t<double> array = arrayOf(given, 2, "strokes", what);
+  if (array.shape(1) != 5)
+    raise(invalidArgument("strokes", what));
   if (static_cast<std::size_t>(array.shape(0)) > MAX_BATCH)
     raise(invalidArgument("strokes", "at most " + std::to_string(MAX_BATCH) + " rows"));
   const auto rows = array.unchecked<2>();

@@ -47,16 +47,10 @@ CuePlacement executedCue(const py::dict& shot, const ShotConfiguration& configur
 /// A track as an (N, 3) array of t, x, y; errors name `field`.
 std::vector<TrackPoint> trackOf(const py::handle& given, const std::string& field)
 {
-  py::array_t<double> array;
-  try
-  {
-    array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(given);
-  }
-  catch (const py::error_already_set&)
-  {
-  }
-  if (!array || array.ndim() != 2 || array.shape(1) != 3)
-    raise(invalidArgument(field, "must be an array of shape (N, 3): t, x, y"));
+  const char* const what = "must be an array of shape (N, 3): t, x, y";
+  const py::array_t<double> array = arrayOf(given, 2, field, what);
+  if (array.shape(1) != 3)
+    raise(invalidArgument(field, what));
   std::vector<TrackPoint> track;
   auto rows = array.unchecked<2>();
   for (py::ssize_t i = 0; i < rows.shape(0); ++i)

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "billiard_shot_planner/impact/multiple_impact_solver.hpp"
+#include "layout.hpp"
 #include "python_errors.hpp"
 
 namespace billiard_shot_planner::python
@@ -61,22 +62,6 @@ ImpactAnswer answerOf(const ImpactResult& result, const std::vector<Contact>& co
   answer.final_kinetic_energy = result.final_kinetic_energy;
   answer.converged = result.converged;
   return answer;
-}
-
-/// A float64 array of `dims` dimensions from anything numpy takes; the error names `field`.
-py::array_t<double> arrayOf(const py::handle& given, int dims, const std::string& field, const char* what)
-{
-  py::array_t<double, py::array::c_style | py::array::forcecast> array;
-  try
-  {
-    array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(given);
-  }
-  catch (const py::error_already_set&)
-  {
-  }
-  if (!array || array.ndim() != dims)
-    raise(invalidArgument(field, what));
-  return array;
 }
 
 Eigen::MatrixXd matrixOf(const py::handle& given, const std::string& field, const char* what)

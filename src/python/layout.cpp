@@ -44,6 +44,22 @@ std::vector<std::string> Layout::ids() const
   return all;
 }
 
+py::array_t<double> arrayOf(const py::handle& given, int dims, const std::string& field, const std::string& what)
+{
+  py::array_t<double, py::array::c_style | py::array::forcecast> array;
+  try
+  {
+    array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(given);
+  }
+  catch (const py::error_already_set&)
+  {
+    array = {};
+  }
+  if (!array || array.ndim() != dims)
+    raise(invalidArgument(field, what));
+  return array;
+}
+
 Eigen::Vector2d point(const py::handle& given, const std::string& field)
 {
   const std::vector<double> xy = numbers(given, 2, field, "two numbers (x, y) in m");

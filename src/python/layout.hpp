@@ -1,5 +1,6 @@
 #pragma once
 
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <Eigen/Core>
@@ -19,6 +20,10 @@ struct Layout
   std::vector<std::string> ids() const;
 };
 
+/// A float64 array of `dims` dimensions from anything numpy takes (C order); otherwise Error naming `field`, saying
+/// `what` it must be.
+pybind11::array_t<double> arrayOf(const pybind11::handle& given, int dims, const std::string& field,
+                                  const std::string& what);
 /// A point on the cloth from any two numbers; the error names `field`.
 Eigen::Vector2d point(const pybind11::handle& given, const std::string& field);
 /// A vector from any three numbers; the error names `field`.
