@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <initializer_list>
+#include <sstream>
 #include <utility>
 
 namespace billiard_shot_planner
@@ -250,6 +251,25 @@ Expected<RollingModel> rollingModelNamed(const std::string& name, const std::str
 Expected<BallBallFriction> ballBallFrictionNamed(const std::string& name, const std::string& field)
 {
   return namedIn(ballBallFrictionModels(), name, field);
+}
+
+std::vector<std::string> pathSteps(const std::string& path)
+{
+  std::vector<std::string> parts;
+  std::stringstream stream(path);
+  for (std::string part; std::getline(stream, part, '.');)
+    parts.push_back(part);
+  return parts;
+}
+
+Error unknownField(const std::string& field, const std::string& what)
+{
+  const std::string law = ".law.";
+  const std::size_t at = field.rfind(law);
+  if (at != std::string::npos && field.find('.', at + law.size()) == std::string::npos)
+    return invalidArgument(field, "is not a parameter of the law that " + field.substr(0, at + law.size()) +
+                                      "type chooses (docs/impact_model.md lists the laws)");
+  return invalidArgument(field, "is not " + what);
 }
 
 bool isConfigurationPath(const std::string& path)

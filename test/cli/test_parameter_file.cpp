@@ -102,6 +102,8 @@ TEST(ParameterFile, BadFilesNameTheField)
       {"table: {pockets: [[0, 0]]}", "table.pockets[0]"},
       {"table: {pockets: 3}", "table.pockets"},
       {"cue_mass: [1, 2]", "cue_mass"},
+      {"table: 5", "table"},  // a section that is not a map would hide its fields
+      {"table: {cushion: {law: elastic_plastic}}", "table.cushion.law"},
       {"table: [", "parameter_file"},
       {"- 1", "parameter_file"},
   };

@@ -1,7 +1,9 @@
 // The table YAML format: the shipped 9-ft table is the code's default, and bad files give named errors.
 #include <gtest/gtest.h>
 
+#include "billiard_shot_planner/io/parameter_file.hpp"
 #include "billiard_shot_planner/io/table_yaml.hpp"
+#include "billiard_shot_planner/shot/shot_prediction.hpp"
 
 #include <utility>
 
@@ -56,7 +58,9 @@ TEST(TableYaml, AContactsLawIsReadByTypeWithItsParameters)
   EXPECT_TRUE(std::holds_alternative<bsp::ConstantRestitution>(snooker.value().cloth.normal_law));
 
   EXPECT_EQ(bsp::parseTableYaml("table: {cushion: {law: {type: hertz_typo}}}").error().field, "table.cushion.law.type");
-  EXPECT_EQ(bsp::parseTableYaml("table: {cushion: {law: {yield_speed: 1}}}").error().field, "table.cushion.law.type");
+  // A law's parameter under the default law (constant), which has none: the parameter is named.
+  EXPECT_EQ(bsp::parseTableYaml("table: {cushion: {law: {yield_speed: 1}}}").error().field,
+            "table.cushion.law.yield_speed");
   EXPECT_EQ(bsp::parseTableYaml("table: {cloth: {law: {type: elastic_plastic, yield_speed: 0}}}").error().field,
             "table.cloth.law.yield_speed");
   EXPECT_EQ(bsp::parseTableYaml("table: {cloth: {law: {type: elastic_plastic, yeild_speed: 1}}}").error().field,
@@ -80,6 +84,11 @@ TEST(TableYaml, AFileGivesItsBallsContactAndMotionAndRefusesUnknownFields)
       {"table: {}\nmotion: {sliding_friction: -1}", "motion.sliding_friction"},
       {"table: {}\ncue: {}", "cue"},
       {"table: {cushion: {restitution: 0.8, frition: 0.1}}", "table.cushion.frition"},
+      {"table: {}\nballs: {radius: -0.03}", "balls.radius"},
+      {"table: {}\nballs: 0.17", "balls"},
+      {"table: {}\nmotion: {gravity: 9.81}", "motion.gravity"},  // the cloth's part of the motion only
+      {"table: {}\ncue_mass: 0.5", "cue_mass"},
+      {"table: {}\nball_ball: {law: {type: elastic_plastic, yield_speed: -1}}", "ball_ball.law.yield_speed"},
   };
   for (const auto& [text, field] : bad)
   {
@@ -87,4 +96,32 @@ TEST(TableYaml, AFileGivesItsBallsContactAndMotionAndRefusesUnknownFields)
     ASSERT_FALSE(file.ok()) << text;
     EXPECT_EQ(file.error().field, field) << text;
   }
+}
+
+// A table file and a parameter file are two layouts of the one list of configuration fields: the same constants
+// written in each give the same configuration.
+TEST(TableYaml, ATableFileReadsAsTheSameFieldsInAParameterFile)
+{
+  const std::string table =
+      "table: {length: 2.84, width: 1.42, cushion: {restitution: 0.8, law: {type: "
+      "elastic_plastic, yield_speed: 1.5}}, pockets: [[0, 0.71, 0.06], [0, -0.71, 0.06]]}\n"
+      "ball_ball: {restitution: 0.93, friction_model: constant, friction: 0.06}\n"
+      "motion: {rolling_model: pooltool, rolling_friction: 0.012}\n";
+  const auto file = bsp::parseTableFile(table + "balls: {mass: 0.16, radius: 0.0285}\n");
+  const auto parameters = bsp::parseParameterFile(table + "ball_mass: 0.16\nball_radius: 0.0285\n");
+  ASSERT_TRUE(file.ok()) << file.error().describe();
+  ASSERT_TRUE(parameters.ok()) << parameters.error().describe();
+  const bsp::ShotConfiguration from_file = bsp::withTableFile(bsp::ShotConfiguration{}, file.value());
+  bsp::ShotConfiguration from_parameters = parameters.value().configuration;
+  bsp::ShotConfiguration from_table_file = from_file;
+  const std::vector<bsp::NamedParameter> expected = bsp::numericParameters(from_parameters);
+  const std::vector<bsp::NamedParameter> read = bsp::numericParameters(from_table_file);
+  ASSERT_EQ(read.size(), expected.size());
+  for (std::size_t i = 0; i < read.size(); ++i)
+    EXPECT_EQ(*read[i].value, *expected[i].value) << read[i].name;
+  EXPECT_EQ(from_file.motion.rolling_model, bsp::RollingModel::Pooltool);
+  EXPECT_EQ(from_file.ball_contact.friction_model, bsp::BallBallFriction::Constant);
+  ASSERT_EQ(from_file.table.pockets.size(), 2u);
+  EXPECT_EQ(from_file.table.pockets[1].centre.y(), -0.71);
+  EXPECT_EQ(from_file.ball_mass, 0.16);
 }

@@ -91,6 +91,13 @@ inline std::string parameterNameOfField(const std::string& field)
   return isConfigurationPath(field) ? parameterName(field) : field;
 }
 
+/// "table.cloth.friction" → {"table", "cloth", "friction"}: the steps a reader descends by.
+std::vector<std::string> pathSteps(const std::string& path);
+
+/// A key that no field of the configuration has, at `field` in a file or request, refused: under a law
+/// ("table.cushion.law.yield_speed") it is a parameter the chosen law lacks; elsewhere it is not `what`.
+Error unknownField(const std::string& field, const std::string& what);
+
 /// "table/cloth/friction" → "table.cloth.friction".
 inline std::string configurationPath(std::string parameter_name)
 {
