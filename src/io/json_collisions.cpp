@@ -7,6 +7,7 @@
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
 #include "billiard_shot_planner/scenarios/ball_chain.hpp"
 #include "billiard_shot_planner/scenarios/ball_collision.hpp"
+#include "json_configuration_reader.hpp"
 #include "json_fields.hpp"
 #include "json_motion.hpp"
 
@@ -154,30 +155,15 @@ Expected<BallCollision> ballCollisionFromJson(const json& request)
 
 Expected<BallContactSettings> ballContactFromJson(const json& request)
 {
-  BallCollision collision;
-  if (request.contains("table_file"))
-  {
-    auto loaded = tableFile(request);
-    if (!loaded)
-      return loaded.error();
-    const BallContactSettings& file = loaded.value().ball_contact;  // under the request's own "ball_ball"
-    collision.ball_ball = file.ball_ball;
-    collision.friction_model = file.friction_model;
-    collision.stiffness_ratio = file.stiffness_ratio;
-  }
-  auto fields = object(request, "ball_ball", false);
-  if (!fields)
-    return fields.error();
-  if (Status status = firstError(
-          {readSurface(request, "ball_ball", collision.ball_ball), readBallBallFriction(request, collision),
-           readNumbers(fields.value(), {{"cloth_stiffness_ratio", &collision.stiffness_ratio}}, "ball_ball")});
+  auto configuration = requestConfiguration(request);
+  if (!configuration)
+    return configuration.error();
+  const BallContactSettings& contact = configuration.value().ball_contact;
+  if (Status status = firstError({validate(contact.ball_ball, "ball_ball"),
+                                  requireStiffnessRatio(contact.stiffness_ratio, "ball_ball.cloth_stiffness_ratio")});
       !status)
     return status.error();
-  if (Status status = firstError({validate(collision.ball_ball, "ball_ball"),
-                                  requireStiffnessRatio(collision.stiffness_ratio, "ball_ball.cloth_stiffness_ratio")});
-      !status)
-    return status.error();
-  return BallContactSettings{collision.ball_ball, collision.friction_model, collision.stiffness_ratio};
+  return contact;
 }
 
 namespace

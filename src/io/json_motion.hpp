@@ -26,10 +26,9 @@ struct MotionSetup
   double spacing = 0.01;
 };
 
-/// The table ("table_file", "table"), the motion parameters and "sample_spacing" of a request; `cloth`, when
-/// given, is the cloth the strike used (the table's unless a table file overrides it).
-Expected<MotionSetup> motionSetup(const json& request, const SolverOptions& options, const SurfaceContact* cloth,
-                                  const BallProperties& ball);
+/// The ball ("ball_mass", "ball_radius"), the table ("table_file", "table", or the strike's "table_contact" as its
+/// cloth), the motion parameters and "sample_spacing" of a request.
+Expected<MotionSetup> motionSetup(const json& request, const SolverOptions& options);
 /// The strike of a request (its cue fields) and the table and motion it moves on, all read before anything is
 /// solved: bad input costs nothing.
 struct StrikeSetup

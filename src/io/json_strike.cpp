@@ -5,6 +5,7 @@
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
 #include "billiard_shot_planner/scenarios/cue_stroke.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
+#include "json_configuration_reader.hpp"
 #include "json_fields.hpp"
 
 namespace billiard_shot_planner
@@ -46,22 +47,6 @@ Expected<Eigen::Vector3d> hitNormalField(const json& request, const CueStrike& s
   if (!centre)
     return centre.error();
   return hitNormal(point.value(), strike.cue_direction, centre.value(), strike.ball_radius);
-}
-
-/// "cue_end_mass": kg, or "inf" for a tip held on the cue's axis (the paper's shooter); the strike's default when
-/// absent.
-Status readEndMass(const json& request, CueStrike& strike)
-{
-  if (request.contains("cue_end_mass") && request.at("cue_end_mass") == "inf")
-  {
-    strike.cue_end_mass = CUE_HELD_ON_AXIS;
-    return {};
-  }
-  auto mass = number(request, "cue_end_mass", strike.cue_end_mass);
-  if (!mass)
-    return invalidArgument("cue_end_mass", "must be a number of kg or \"inf\"");
-  strike.cue_end_mass = mass.value();
-  return {};
 }
 
 /// The cue as a stroke, "cue": {"phi_deg", "theta_deg", "speed", "a", "b"}, in place of cue_direction, cue_speed
@@ -113,25 +98,14 @@ Status readCueAndHitPoint(const json& request, CueStrike& strike)
 
 Expected<CueStrike> strikePhysicsFromJson(const json& request)
 {
-  CueStrike strike = strikePhysics(ShotConfiguration{});  // the node's defaults: config/default.yaml
-  if (Status status = readNumbers(request,
-                                  {{"cue_mass", &strike.cue_mass},
-                                   {"ball_mass", &strike.ball_mass},
-                                   {"ball_radius", &strike.ball_radius},
-                                   {"stiffness_ratio", &strike.stiffness_ratio}},
-                                  "", Presence::Optional);
-      !status)
-    return status.error();
-  if (Status status = readEndMass(request, strike); !status)
-    return status.error();
-  for (auto [name, target] :
-       {std::pair{"cue_contact", &strike.cue_contact}, std::pair{"table_contact", &strike.table_contact}})
-  {
-    auto surface = surfaceContact(request, name, *target);
-    if (!surface)
-      return surface.error();
-    *target = surface.value();
-  }
+  auto configuration = requestConfiguration(request);  // over the node's defaults: config/default.yaml
+  if (!configuration)
+    return configuration.error();
+  CueStrike strike = strikePhysics(configuration.value());
+  auto cloth = strikeCloth(request, configuration.value());
+  if (!cloth)
+    return cloth.error();
+  strike.table_contact = cloth.value();
   return strike;
 }
 

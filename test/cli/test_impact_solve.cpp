@@ -422,6 +422,48 @@ TEST(ImpactSolve, ATableFileGivesItsClothsMotionAndRefusesUnknownFields)
   EXPECT_NEAR(rolls["v"][0].get<double>(), 5.0 / 7.0, 1e-9);
 }
 
+// A request's configuration is read by the one list of fields (docs/cli.md): a table file gives every problem that
+// strikes the ball its cloth, as the same constants spelt out in the request do.
+TEST(ImpactSolve, ATableFilesClothIsTheStrikesAsIfSpeltOut)
+{
+  const std::string strike = R"({"problem": "cue_strike", "ball_radius": 0.02625, "ball_mass": 0.1406,
+      "cue": {"phi_deg": 0, "theta_deg": 10, "speed": 3, "a": 0.3, "b": -0.3}, )";
+  const SolverRun from_file =
+      runSolver(strike + R"("table_file": ")" + std::string(CONFIG_DIR) + R"(/tables/snooker_mathavan.yaml"})");
+  // The snooker file's cloth (config/tables/snooker_mathavan.yaml).
+  const SolverRun spelt =
+      runSolver(strike + R"("table_contact": {"restitution": 0.51625, "friction": 0.212, "eta2": 10.0}})");
+  const SolverRun pool = runSolver(strike + "\"stiffness_ratio\": 0.8}");
+  ASSERT_EQ(from_file.exit_code, 0) << from_file.output;
+  ASSERT_EQ(spelt.exit_code, 0) << spelt.output;
+  ASSERT_EQ(pool.exit_code, 0) << pool.output;
+  const auto a = nlohmann::json::parse(from_file.output), b = nlohmann::json::parse(spelt.output);
+  EXPECT_EQ(a["v"], b["v"]);
+  EXPECT_EQ(a["omega"], b["omega"]);
+  // The pool cloth (friction 0.152479) answers otherwise: the file's cloth was used.
+  EXPECT_NE(nlohmann::json::parse(pool.output)["v"], a["v"]);
+}
+
+TEST(ImpactSolve, AConfigurationSectionOfTheWrongKindIsRefused)
+{
+  const std::string motion = R"({"problem": "ball_motion", "position": [0, 0], "v": [1, 0, 0], "omega": [0, 0, 0], )";
+  const std::string cases[][2] = {
+      {motion + R"("table": 3})", "table"},
+      {motion + R"("table": {"cloth": [0.5, 0.2]}})", "table.cloth"},
+      {motion + R"("planar": "yes"})", "planar"},
+      {motion + R"("table": {"pockets": [{"centre": [0, 0, 1], "radius": 0.05}]}})", "table.pockets[0].centre"},
+      {motion + R"("table": {"pockets": [{"centre": [0, 0]}]}})", "table.pockets[0].radius"},
+      {stroke(R"({"phi_deg": 0, "speed": 2})", R"(, "cue_contact": {"law": "elastic_plastic"})"), "cue_contact.law"},
+      {stroke(R"({"phi_deg": 0, "speed": 2})", R"(, "cue_end_mass": "heavy")"), "cue_end_mass"},
+  };
+  for (const auto& c : cases)
+  {
+    const SolverRun run = runSolver(c[0]);
+    EXPECT_EQ(run.exit_code, 2) << c[0] << "\n" << run.output;
+    EXPECT_NE(run.output.find("invalid_argument: " + c[1] + ":"), std::string::npos) << c[0] << "\n" << run.output;
+  }
+}
+
 TEST(ImpactSolve, MeaninglessInputIsRefusedNotSolved)
 {
   // Finite but absurd values must be refused: solved, they could come back as null (NaN) with exit 0, run out of
