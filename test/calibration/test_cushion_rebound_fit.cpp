@@ -13,6 +13,7 @@
 
 #include "billiard_shot_planner/calibration/cushion_rebound_fit.hpp"
 #include "billiard_shot_planner/io/table_yaml.hpp"
+#include "converging_fit.hpp"
 
 namespace bsp = billiard_shot_planner;
 
@@ -103,7 +104,8 @@ TEST(CushionRebounds, NoConstantRestitutionFollowsIt)
   const auto rebounds = measuredRebounds();
   bsp::CushionReboundTable table = snookerTable();
   table.cushion.normal_law = bsp::ConstantRestitution{};
-  const auto fit = bsp::fitCushionRebounds(table, {{"cushion.restitution", 0.9, 0.0, 1.0}}, rebounds, RATIO_SIGMA);
+  const auto fit =
+      bsp::fitCushionRebounds(table, {{"cushion.restitution", 0.9, 0.0, 1.0}}, rebounds, RATIO_SIGMA, convergingFit());
   ASSERT_TRUE(fit.ok()) << fit.error().describe();
   ASSERT_TRUE(bsp::applyReboundValues({"cushion.restitution"}, {fit.value().parameters[0].value}, table).ok());
   const RatioErrors errors = ratioErrors(table, rebounds);
@@ -120,7 +122,7 @@ TEST(CushionRebounds, TheFitFindsTheShippedConstantsFromAFarStart)
   bsp::CushionReboundTable start = shipped;
   start.cushion.restitution = 0.9;
   start.cushion.normal_law = bsp::ElasticPlasticRestitution{3.0};
-  bsp::FitOptions options;
+  bsp::FitOptions options = convergingFit();
   options.starts = 4;
   const auto fit = bsp::fitCushionRebounds(
       start, {{"cushion.restitution", 0.9, 0.5, 1.0}, {"cushion.law.yield_speed", 3.0, 0.05, 10.0}}, rebounds,

@@ -12,6 +12,7 @@
 
 #include "billiard_shot_planner/calibration/rolling_collision_fit.hpp"
 #include "billiard_shot_planner/io/table_yaml.hpp"
+#include "converging_fit.hpp"
 
 namespace bsp = billiard_shot_planner;
 
@@ -117,7 +118,7 @@ TEST(RollingCollisions, TheFitFindsTheShippedContactFromAFarStart)
   bsp::RollingCollisionTable start = shipped;
   const auto fit = bsp::fitRollingCollisions(
       start, {{"ball_ball.restitution", 0.9, 0.5, 1.0}, {"ball_ball.friction", 0.02, 0.0, 0.5}}, measuredCollisions(),
-      SPEED_SIGMA);
+      SPEED_SIGMA, convergingFit());
   ASSERT_TRUE(fit.ok()) << fit.error().describe();
   EXPECT_NEAR(fit.value().parameters[0].value, shipped.contact.ball_ball.restitution, 0.01);
   EXPECT_NEAR(fit.value().parameters[1].value, shipped.contact.ball_ball.friction, 0.005);

@@ -9,6 +9,7 @@
 
 #include "billiard_shot_planner/calibration/track_fit.hpp"
 #include "billiard_shot_planner/planning/stroke.hpp"
+#include "converging_fit.hpp"
 
 namespace bsp = billiard_shot_planner;
 
@@ -60,14 +61,6 @@ const std::vector<bsp::FitParameter> MOTION_CONSTANTS = {{"motion.sliding_fricti
                                                          {"table.cushion.restitution", 0.85, 0.0, 1.0}};
 const double TRUTH[] = {0.2, 0.015, 0.75};
 
-/// The longest wall-clock budget allowed: the fits' 60 s default is a safety net in seconds, and the sanitized build
-/// runs them twenty times slower.
-bsp::FitOptions slowMachineBudget()
-{
-  bsp::FitOptions options;
-  options.max_seconds = 3600.0;
-  return options;
-}
 }  // namespace
 
 TEST(TrackFit, RecoversTheConstantsAndPredictsShotsItNeverSaw)
@@ -77,7 +70,7 @@ TEST(TrackFit, RecoversTheConstantsAndPredictsShotsItNeverSaw)
   for (const bsp::CuePlacement& cue : shotsIntoCushions())
     shots.push_back(observed(cue, truth(), rng));
   const auto fitted =
-      bsp::fitTracks(bsp::ShotConfiguration{}, MOTION_CONSTANTS, shots, CAMERA_SIGMA, slowMachineBudget());
+      bsp::fitTracks(bsp::ShotConfiguration{}, MOTION_CONSTANTS, shots, CAMERA_SIGMA, convergingFit());
   ASSERT_TRUE(fitted.ok()) << fitted.error().describe();
   const bsp::FitResult& fit = fitted->fit;
   EXPECT_TRUE(fit.converged) << fit.message;
@@ -171,7 +164,7 @@ TEST(TrackFit, RecoversTheBallBallConstantsFromCutShots)
   std::mt19937 rng(4);
   const auto fitted =
       bsp::fitTracks(start, {{"ball_ball.restitution", 0.95, 0.0, 1.0}, {"ball_ball.friction", 0.05, 0.0, 1.0}},
-                     cutShots(drawn, rng), CAMERA_SIGMA, slowMachineBudget());
+                     cutShots(drawn, rng), CAMERA_SIGMA, convergingFit());
   ASSERT_TRUE(fitted.ok()) << fitted.error().describe();
   const double truth[] = {0.9, 0.08};
   for (int i = 0; i < 2; ++i)
@@ -260,7 +253,7 @@ TEST(TrackFit, AFitReportsItsChiSquarePerDegreeOfFreedom)
       {"motion.sliding_friction", defaults.motion.sliding_friction, 0.01, 1.0},
       {"motion.rolling_friction", defaults.motion.rolling_friction, 0.001, 0.2},
       {"table.cushion.restitution", defaults.table.cushion.restitution, 0.0, 1.0}};
-  const auto fitted = bsp::fitTracks(defaults, parameters, shots, CAMERA_SIGMA, slowMachineBudget());
+  const auto fitted = bsp::fitTracks(defaults, parameters, shots, CAMERA_SIGMA, convergingFit());
   ASSERT_TRUE(fitted.ok()) << fitted.error().describe();
   const bsp::FitResult& fit = fitted->fit;
   const double expected[] = {0.19, 0.013, 0.74};
