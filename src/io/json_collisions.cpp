@@ -136,9 +136,30 @@ Status readBalls(const json& request, BallCollision& collision)
   return {};
 }
 
-Expected<BallCollision> ballCollisionFromJson(const json& request)
+/// The constants a collision starts from: a table file's ball–ball contact and cloth when the request names one
+/// (its balls are for library callers: the request gives its own), else the defaults.
+Expected<BallCollision> collisionBase(const json& request)
 {
   BallCollision collision;
+  if (!request.contains("table_file"))
+    return collision;
+  auto file = tableFile(request);
+  if (!file)
+    return file.error();
+  const BallContactSettings& contact = file.value().ball_contact;
+  collision.ball_ball = contact.ball_ball;
+  collision.friction_model = contact.friction_model;
+  collision.stiffness_ratio = contact.stiffness_ratio;
+  collision.cloth = file.value().table.cloth;
+  return collision;
+}
+
+Expected<BallCollision> ballCollisionFromJson(const json& request)
+{
+  auto base = collisionBase(request);
+  if (!base)
+    return base.error();
+  BallCollision collision = base.value();
   if (Status status =
           firstError({readBalls(request, collision), readSurface(request, "ball_ball", collision.ball_ball),
                       readSurface(request, "cloth", collision.cloth), readBallBallFriction(request, collision),

@@ -201,7 +201,16 @@ Expected<json> solveBallTable(const json& request, const SolverOptions& options)
   if (!spin)
     return spin.error();
   impact.angular_velocity = spin.value();
-  auto table = surfaceContact(request, "table");
+  // A table file gives the cloth's constants, which the request's "table" then overrides one by one.
+  std::optional<SurfaceContact> cloth;
+  if (request.contains("table_file"))
+  {
+    auto file = tableFile(request);
+    if (!file)
+      return file.error();
+    cloth = file.value().table.cloth;
+  }
+  auto table = surfaceContact(request, "table", cloth);
   if (!table)
     return table.error();
   impact.table = table.value();

@@ -444,6 +444,37 @@ TEST(ImpactSolve, ATableFilesClothIsTheStrikesAsIfSpeltOut)
   EXPECT_NE(nlohmann::json::parse(pool.output)["v"], a["v"]);
 }
 
+// ball_ball and ball_table take a table file's constants (config/tables/snooker_mathavan.yaml) as the same
+// constants spelt out in the request.
+TEST(ImpactSolve, ATableFilesContactsAreTheCollisionsAsIfSpeltOut)
+{
+  const std::string file = R"("table_file": ")" + std::string(CONFIG_DIR) + R"(/tables/snooker_mathavan.yaml")";
+  const std::string snooker_cloth = R"({"restitution": 0.51625, "friction": 0.212, "eta2": 10.0})";
+  const std::string collision = R"({"problem": "ball_ball", "ball_radius": 0.02625, "ball_mass": 0.1406,
+      "balls": [{"position": [0, 0], "v": [1.5, 0, 0], "omega": [0, 40, 0]}, {"position": [0.0454663337, 0.02625]}], )";  // half-ball: R√3, R
+  const std::string drop = R"({"problem": "ball_table", "mass": 0.1406, "radius": 0.02625,
+      "velocity": [0.5, 0, -1.5], "angular_velocity": [0, 0, 0], )";
+  const std::pair<std::string, std::string> cases[] = {
+      {collision + file + "}", collision +
+                                   R"("ball_ball": {"restitution": 0.966, "friction": 0.070, "eta2": 1.2}, "cloth": )" +
+                                   snooker_cloth + R"(, "stiffness_ratio": 0.1})"},
+      {drop + file + "}", drop + R"("table": )" + snooker_cloth + "}"},
+  };
+  for (const auto& [from_file, spelt] : cases)
+  {
+    const SolverRun a = runSolver(from_file), b = runSolver(spelt);
+    ASSERT_EQ(a.exit_code, 0) << a.output;
+    ASSERT_EQ(b.exit_code, 0) << b.output;
+    const auto x = nlohmann::json::parse(a.output), y = nlohmann::json::parse(b.output);
+    EXPECT_EQ(x.contains("balls") ? x["balls"] : x["v"], y.contains("balls") ? y["balls"] : y["v"]) << from_file;
+  }
+  // The file's cloth stands under the request's own "table" fields: a friction given replaces only the friction.
+  const SolverRun over = runSolver(drop + file + R"(, "table": {"friction": 0.1}})");
+  const SolverRun spelt_over = runSolver(drop + R"("table": {"restitution": 0.51625, "friction": 0.1, "eta2": 10.0}})");
+  ASSERT_EQ(over.exit_code, 0) << over.output;
+  EXPECT_EQ(nlohmann::json::parse(over.output)["v"], nlohmann::json::parse(spelt_over.output)["v"]);
+}
+
 TEST(ImpactSolve, AConfigurationSectionOfTheWrongKindIsRefused)
 {
   const std::string motion = R"({"problem": "ball_motion", "position": [0, 0], "v": [1, 0, 0], "omega": [0, 0, 0], )";
