@@ -1,6 +1,6 @@
 #include "json_configuration_reader.hpp"
 
-#include <array>
+#include <algorithm>
 #include <set>
 #include <utility>
 #include <vector>
@@ -197,6 +197,19 @@ std::optional<std::string> requestPlace(const std::string& path)
   if (startsWith(path, "motion."))
     return path.substr(std::string("motion.").size());
   return path;
+}
+
+std::vector<std::string> requestConfigurationFields()
+{
+  std::vector<std::string> fields{"table_file", "table_contact"};
+  for (const std::string& path : configurationFieldPaths())
+    if (const std::optional<std::string> place = requestPlace(path))
+    {
+      const std::string first = pathSteps(*place).front();
+      if (std::find(fields.begin(), fields.end(), first) == fields.end())
+        fields.push_back(first);
+    }
+  return fields;
 }
 
 Error inRequestLayout(Error error)

@@ -4,6 +4,7 @@
 // layout of them (docs/cli.md) and its reader (json_configuration_reader.cpp).
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
 #include "json_fields.hpp"
@@ -16,6 +17,10 @@ namespace json_io
 /// "gravity"), the solver's in "solver" (read by solverOptions), every other field at its own path ("table.cloth.eta2",
 /// "cue_contact.law.type"). "cue_end_mass" is kg or "inf", a tip held on the cue's axis (the paper's shooter).
 std::optional<std::string> requestPlace(const std::string& configuration_path);
+
+/// The top-level fields of the request layout: the first step of every field's place, "table_file" and
+/// "table_contact".
+std::vector<std::string> requestConfigurationFields();
 
 /// An error about the configuration in the request's own names ("motion.sliding_friction" → "sliding_friction").
 Error inRequestLayout(Error error);

@@ -1,9 +1,12 @@
 #include "billiard_shot_planner/io/json_problems.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "json_configuration_reader.hpp"
 #include "json_fields.hpp"
 
 namespace billiard_shot_planner
@@ -13,18 +16,76 @@ namespace
 using nlohmann::json;
 using Solver = Expected<json> (*)(const json&, const SolverOptions&);
 
-const std::pair<const char*, Solver> PROBLEMS[] = {
-    {"ball_ball_table", json_io::solveBallBallTable},
-    {"chain", json_io::solveChain},
-    {"ball_ball", json_io::solveBallBall},
-    {"cue_strike", json_io::solveCueStrike},
-    {"ball_table", json_io::solveBallTable},
-    {"ball_motion", json_io::solveBallMotion},
-    {"shot", json_io::solveShot},
-    {"table_shot", json_io::solveTableShot},
-    {"plan_shot", json_io::solvePlanShot},
-    {"calibrate", json_io::solveCalibrate},
+/// A problem: its solver and the top-level fields it reads besides "problem" and "solver" (docs/cli.md, Problems);
+/// one that reads a configuration (`configuration`) also takes every field of the configuration's request layout.
+struct Problem
+{
+  const char* name;
+  Solver solve;
+  std::vector<std::string> fields;
+  bool configuration;
 };
+
+const std::vector<Problem>& problems()
+{
+  static const std::vector<Problem> known{
+      {"ball_ball_table", json_io::solveBallBallTable, {"e1", "e2", "m1", "m2", "stiffness_ratio", "v0"}, false},
+      {"chain", json_io::solveChain, {"masses", "restitution", "stiffness", "velocities", "wall"}, false},
+      {"ball_ball",
+       json_io::solveBallBall,
+       {"ball_ball", "ball_mass", "ball_radius", "balls", "cloth", "stiffness_ratio", "table_file",
+        "touching_tolerance"},
+       false},
+      {"cue_strike",
+       json_io::solveCueStrike,
+       {"ball_centre", "cue", "cue_axis_point", "cue_direction", "cue_speed", "hit_normal"},
+       true},
+      {"ball_table",
+       json_io::solveBallTable,
+       {"angular_velocity", "mass", "radius", "table", "table_file", "velocity"},
+       false},
+      {"ball_motion", json_io::solveBallMotion, {"omega", "position", "sample_spacing", "v"}, true},
+      {"shot",
+       json_io::solveShot,
+       {"ball_centre", "ball_position", "cue", "cue_axis_point", "cue_direction", "cue_speed", "hit_normal",
+        "sample_spacing"},
+       true},
+      {"table_shot",
+       json_io::solveTableShot,
+       {"ball_centre", "balls", "cue", "cue_axis_point", "cue_ball", "cue_direction", "cue_speed", "hit_normal",
+        "sample_spacing", "samples"},
+       true},
+      {"plan_shot",
+       json_io::solvePlanShot,
+       {"balls", "budget_ms", "cue_ball", "cue_region", "limits", "noise", "pocket", "rollouts", "rules", "seed",
+        "target", "threads"},
+       true},
+      {"calibrate",
+       json_io::solveCalibrate,
+       {"budget_ms", "fit", "position_noise", "robust_loss_sigmas", "shots", "starts", "threads"},
+       true},
+  };
+  return known;
+}
+
+/// A top-level field the problem does not read is refused: a misspelt or misplaced constant would otherwise be
+/// ignored and the answer computed without it.
+Status onlyFieldsOf(const Problem& problem, const json& request)
+{
+  static const std::vector<std::string> configuration = json_io::requestConfigurationFields();
+  for (const auto& item : request.items())
+  {
+    const std::string& key = item.key();
+    const auto listed = [&key](const std::vector<std::string>& names)
+    { return std::find(names.begin(), names.end(), key) != names.end(); };
+    if (key == "problem" || key == "solver" || listed(problem.fields) ||
+        (problem.configuration && listed(configuration)))
+      continue;
+    return invalidArgument(
+        key, "is not a field of the problem \"" + std::string(problem.name) + "\" (docs/cli.md lists its fields)");
+  }
+  return {};
+}
 
 /// `path` extended by one step: a key of an object, or an index of an array.
 std::string pathTo(const std::string& path, const std::string& key)
@@ -74,8 +135,8 @@ Expected<json> finiteAnswer(Expected<json> answer)
 std::string knownProblems()
 {
   std::string names;
-  for (const auto& [name, solver] : PROBLEMS)
-    names += (names.empty() ? "" : ", ") + std::string(name);
+  for (const Problem& problem : problems())
+    names += (names.empty() ? "" : ", ") + std::string(problem.name);
   return names;
 }
 }  // namespace
@@ -92,9 +153,13 @@ Expected<json> solveJsonProblem(const json& request)
   const std::string problem = request.at("problem").get<std::string>();
   try
   {
-    for (const auto& [name, solver] : PROBLEMS)
-      if (problem == name)
-        return finiteAnswer(solver(request, options.value()));
+    for (const Problem& known : problems())
+      if (problem == known.name)
+      {
+        if (Status status = onlyFieldsOf(known, request); !status)
+          return status.error();
+        return finiteAnswer(known.solve(request, options.value()));
+      }
   }
   catch (const json::exception& e)
   {

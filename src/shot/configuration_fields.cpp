@@ -272,33 +272,38 @@ Error unknownField(const std::string& field, const std::string& what)
   return invalidArgument(field, "is not " + what);
 }
 
-bool isConfigurationPath(const std::string& path)
+std::vector<std::string> configurationFieldPaths()
 {
-  /// The first steps of every field's path: the walk lists them.
-  class FirstSteps final : public ConfigurationVisitor
+  /// Lists the path of every field the walk offers.
+  class PathList final : public ConfigurationVisitor
   {
   public:
-    void number(const std::string& path, double& /*value*/) override { add(path); }
-    void flag(const std::string& path, bool& /*value*/) override { add(path); }
+    void number(const std::string& path, double& /*value*/) override { paths.push_back(path); }
+    void flag(const std::string& path, bool& /*value*/) override { paths.push_back(path); }
     void choice(const std::string& path, std::string& /*value*/, const std::vector<std::string>& /*options*/) override
     {
-      add(path);
+      paths.push_back(path);
     }
     void pockets(const std::string& path, std::vector<Pocket>& /*pockets*/, const Table& /*table*/) override
     {
-      add(path);
+      paths.push_back(path);
     }
-    std::vector<std::string> steps;
-
-  private:
-    void add(const std::string& path) { steps.push_back(path.substr(0, path.find('.'))); }
+    std::vector<std::string> paths;
   };
+  PathList list;
+  ShotConfiguration configuration;
+  (void)visitConfiguration(configuration, list);  // listing only: every choice stays an option
+  return list.paths;
+}
+
+bool isConfigurationPath(const std::string& path)
+{
   static const std::vector<std::string> first_steps = []
   {
-    FirstSteps visitor;
-    ShotConfiguration configuration;
-    (void)visitConfiguration(configuration, visitor);
-    return visitor.steps;
+    std::vector<std::string> steps;
+    for (const std::string& field : configurationFieldPaths())
+      steps.push_back(field.substr(0, field.find('.')));
+    return steps;
   }();
   const std::string first = path.substr(0, path.find_first_of(".["));
   return std::find(first_steps.begin(), first_steps.end(), first) != first_steps.end();

@@ -475,6 +475,30 @@ TEST(ImpactSolve, ATableFilesContactsAreTheCollisionsAsIfSpeltOut)
   EXPECT_EQ(nlohmann::json::parse(over.output)["v"], nlohmann::json::parse(spelt_over.output)["v"]);
 }
 
+// A field a problem does not read is refused, not ignored: the answer would be computed without it.
+TEST(ImpactSolve, AFieldTheProblemDoesNotReadIsRefused)
+{
+  const std::string motion = R"({"problem": "ball_motion", "position": [0, 0], "v": [1, 0, 0], "omega": [0, 0, 0], )";
+  const std::string cases[][2] = {
+      {motion + R"("sliding_fricton": 0.2})", "sliding_fricton"},
+      {motion + R"("cushion": {"restitution": 0.8}})", "cushion"},  // the cushion is the table's: table.cushion
+      {R"({"problem": "ball_ball_table", "m2": 1, "stiffness_ratio": 1, "e1": 0.9, "e2": 0.7, "table_file": "x"})",
+       "table_file"},
+      {stroke(R"({"phi_deg": 0, "speed": 2})", R"(, "balls": [])"), "balls"},
+      {R"({"problem": "plan_shot", "balls": [{"id": "cue", "position": [0, 0]}], "sample_spacing": 0.01})",
+       "sample_spacing"},
+      {R"({"problem": "calibrate", "shots": [], "fit": [], "cue_ball": "cue"})", "cue_ball"},
+  };
+  for (const auto& c : cases)
+  {
+    const SolverRun run = runSolver(c[0]);
+    EXPECT_EQ(run.exit_code, 2) << c[0] << "\n" << run.output;
+    EXPECT_NE(run.output.find("invalid_argument: " + c[1] + ": is not a field of the problem"), std::string::npos)
+        << c[0] << "\n"
+        << run.output;
+  }
+}
+
 TEST(ImpactSolve, AConfigurationSectionOfTheWrongKindIsRefused)
 {
   const std::string motion = R"({"problem": "ball_motion", "position": [0, 0], "v": [1, 0, 0], "omega": [0, 0, 0], )";

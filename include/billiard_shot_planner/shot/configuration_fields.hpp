@@ -80,6 +80,10 @@ inline std::string parameterName(std::string path)
   return path;
 }
 
+/// The path of every field of the configuration, in the walk's order, with the default law's parameters (a law's
+/// type decides which parameters follow it).
+std::vector<std::string> configurationFieldPaths();
+
 /// Whether `path` lies in a configuration ("table.cloth.friction", "table.pockets[2]") rather than in a call's other
 /// input ("shots[0].tracks.cue[3].t"): its first step is one of the configuration's.
 bool isConfigurationPath(const std::string& path);
