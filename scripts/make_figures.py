@@ -5,6 +5,7 @@ Usage: make_figures.py IMPACT_SOLVE OUTPUT_DIR
 """
 import json
 import math
+import os
 import subprocess
 import sys
 
@@ -168,10 +169,81 @@ def figure_masse_fit(program, out):
     return [save(fig, out, "masse_fit_paths.png")]
 
 
+SNOOKER_TABLE = "config/tables/snooker_mathavan.yaml"
+SNOOKER_BALL = {"ball_radius": 0.02625, "ball_mass": 0.1406}
+CUSHION_DATA = "test/data/measurements/cushion_rebound_mathavan2010.csv"
+
+
+def measured_rebounds(root):
+    rows = [line.split(",") for line in open(f"{root}/{CUSHION_DATA}") if line[0].isdigit()]
+    return [(float(v_in), float(v_out)) for v_in, v_out in rows]
+
+
+def rebound(program, root, v_in, cushion=None):
+    """v_out of a ball rolling straight into the snooker table's +x cushion at v_in (the file's cushion, or `cushion`
+    over it), from impact_solve's ball_motion: the ball starts 0.1 mm from the cushion's nose."""
+    radius = SNOOKER_BALL["ball_radius"]
+    rise = 0.4  # the nose 7R/5 above the cloth: (h − R)/R
+    start = 3.569 / 2 - radius * math.sqrt(1 - rise * rise) - 1e-4
+    problem = {"problem": "ball_motion", "position": [start, 0], "v": [v_in, 0, 0], "omega": [0, v_in / radius, 0],
+               "table_file": f"{root}/{SNOOKER_TABLE}", "max_time": 0.1, **SNOOKER_BALL}
+    if cushion:
+        problem["table"] = {"cushion": cushion}
+    events = solve(program, problem)["events"]
+    hit = next(e for e in events if e["type"] == "cushion_hit")
+    return -hit["v"][0]
+
+
+def ratio_rms(program, root, data, cushion=None):
+    errors = [(rebound(program, root, v_in, cushion) - v_out) / v_in for v_in, v_out in data]
+    return math.sqrt(sum(e * e for e in errors) / len(errors))
+
+
+def best_constant_restitution(program, root, data):
+    """The constant law's restitution with the least RMS error of v_out/v_in (golden-section search)."""
+    def cost(e):
+        return ratio_rms(program, root, data, {"restitution": e, "law": {"type": "constant"}})
+    lo, hi = 0.6, 1.0
+    g = (math.sqrt(5) - 1) / 2
+    a, b = hi - g * (hi - lo), lo + g * (hi - lo)
+    fa, fb = cost(a), cost(b)
+    while hi - lo > 1e-4:
+        if fa < fb:
+            hi, b, fb = b, a, fa
+            a = hi - g * (hi - lo)
+            fa = cost(a)
+        else:
+            lo, a, fa = a, b, fb
+            b = lo + g * (hi - lo)
+            fb = cost(b)
+    return (lo + hi) / 2
+
+
+def figure_cushion(program, out, root):
+    data = measured_rebounds(root)
+    e_best = best_constant_restitution(program, root, data)
+    linear = {"restitution": e_best, "law": {"type": "constant"}}
+    speeds = [0.2 + 0.05 * k for k in range(66)]
+    fig, a = plt.subplots(figsize=(7.5, 4.8))
+    a.plot([v for v, _ in data], [w / v for v, w in data], "ko", ms=5,
+           label="measured (Mathavan, Jackson & Parkin 2010, Fig. 7a)")
+    rms = ratio_rms(program, root, data)
+    a.plot(speeds, [rebound(program, root, v) / v for v in speeds], "-", color="tab:red",
+           label=f"elastic–plastic law, the shipped snooker table (RMS {rms:.3f})")
+    rms_linear = ratio_rms(program, root, data, linear)
+    a.plot(speeds, [rebound(program, root, v, linear) / v for v in speeds], "--", color="tab:blue",
+           label=f"best constant restitution, e = {e_best:.3f} (RMS {rms_linear:.3f})")
+    finish_axes(a, "speed into the cushion (m/s)", "v_out / v_in",
+                "A rolling ball into a snooker cushion: rebound against speed", legend={"fontsize": 8})
+    a.set_ylim(0.6, 1.0)
+    return [save(fig, out, "cushion_rebounds.png")]
+
+
 def main():
     program, out = sys.argv[1], sys.argv[2]
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     names = (figure_impulse_curves(program, out) + figure_8(program, out) + figure_masse(program, out) +
-             figure_masse_fit(program, out))
+             figure_masse_fit(program, out) + figure_cushion(program, out, root))
     for n in names:
         print(f"{out}/{n}")
 
