@@ -434,8 +434,8 @@ Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters,
   std::optional<LocalFit> best;
   std::vector<std::vector<double>> tried;
   localFits(model, parameters, rankedStarts(model, parameters, r.squaredNorm(), options.starts), tried, best);
-  if (best && !explainsData(*best) && options.robust_loss_sigmas == 0.0 && options.starts < ESCALATED_STARTS &&
-      model.secondsLeft() > 0.0)
+  if (best && options.escalate && !explainsData(*best) && options.robust_loss_sigmas == 0.0 &&
+      options.starts < ESCALATED_STARTS && model.secondsLeft() > 0.0)
     localFits(model, parameters, rankedStarts(model, parameters, r.squaredNorm(), ESCALATED_STARTS), tried, best);
   if (!best)
     return Error{ErrorKind::NumericalFailure, "parameters", "the model cannot be evaluated along the fit"};

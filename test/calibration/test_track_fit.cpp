@@ -69,8 +69,7 @@ TEST(TrackFit, RecoversTheConstantsAndPredictsShotsItNeverSaw)
   std::vector<bsp::ObservedShot> shots;
   for (const bsp::CuePlacement& cue : shotsIntoCushions())
     shots.push_back(observed(cue, truth(), rng));
-  const auto fitted =
-      bsp::fitTracks(bsp::ShotConfiguration{}, MOTION_CONSTANTS, shots, CAMERA_SIGMA, convergingFit());
+  const auto fitted = bsp::fitTracks(bsp::ShotConfiguration{}, MOTION_CONSTANTS, shots, CAMERA_SIGMA, convergingFit());
   ASSERT_TRUE(fitted.ok()) << fitted.error().describe();
   const bsp::FitResult& fit = fitted->fit;
   EXPECT_TRUE(fit.converged) << fit.message;
@@ -230,9 +229,13 @@ TEST(TrackFit, BadTracksAreRefusedNamingTheObservation)
 // fitted from the configuration's defaults with the default single start: the truth comes back, and the answer
 // reports its degrees of freedom and χ² per degree near 1 — χ² of n − p degrees of freedom has mean 1 per degree
 // and σ √(2/(n − p)), 0.04 here.
-TEST(TrackFit, AFitReportsItsChiSquarePerDegreeOfFreedom)
+namespace
 {
-  std::mt19937 rng(36);
+/// Eight cue-ball shots of the calibration issue's study (speeds 1–3 m/s, b within ±0.3, 2 mm of noise) drawn with
+/// μ_s 0.19, μ_r 0.013 and the cushion's e 0.74.
+std::vector<bsp::ObservedShot> eightTrackedShots(unsigned seed)
+{
+  std::mt19937 rng(seed);
   std::uniform_real_distribution<double> x(-0.9, 0.9), y(-0.4, 0.4), phi(-180.0, 180.0), speed(1.0, 3.0), b(-0.3, 0.3);
   bsp::ShotConfiguration truth;
   truth.motion.sliding_friction = 0.19;
@@ -248,24 +251,62 @@ TEST(TrackFit, AFitReportsItsChiSquarePerDegreeOfFreedom)
     if (cue.ok())
       shots.push_back(observed(cue.value(), truth, rng));
   }
+  return shots;
+}
+
+const double EIGHT_SHOTS_TRUTH[] = {0.19, 0.013, 0.74};
+
+/// The three constants from the node's defaults.
+std::vector<bsp::FitParameter> motionConstantsFromTheDefaults()
+{
   const bsp::ShotConfiguration defaults;
-  const std::vector<bsp::FitParameter> parameters = {
-      {"motion.sliding_friction", defaults.motion.sliding_friction, 0.01, 1.0},
-      {"motion.rolling_friction", defaults.motion.rolling_friction, 0.001, 0.2},
-      {"table.cushion.restitution", defaults.table.cushion.restitution, 0.0, 1.0}};
-  const auto fitted = bsp::fitTracks(defaults, parameters, shots, CAMERA_SIGMA, convergingFit());
-  ASSERT_TRUE(fitted.ok()) << fitted.error().describe();
-  const bsp::FitResult& fit = fitted->fit;
-  const double expected[] = {0.19, 0.013, 0.74};
+  return {{"motion.sliding_friction", defaults.motion.sliding_friction, 0.01, 1.0},
+          {"motion.rolling_friction", defaults.motion.rolling_friction, 0.001, 0.2},
+          {"table.cushion.restitution", defaults.table.cushion.restitution, 0.0, 1.0}};
+}
+
+void expectTheTruthExplained(const bsp::FitResult& fit)
+{
   for (int i = 0; i < 3; ++i)
   {
     const bsp::FittedParameter& p = fit.parameters[i];
-    std::printf("%s: %.5f ± %.5f (truth %g)\n", p.name.c_str(), p.value, p.sigma, expected[i]);
-    EXPECT_NEAR(p.value, expected[i], 4.0 * p.sigma) << p.name;
+    std::printf("%s: %.5f ± %.5f (truth %g)\n", p.name.c_str(), p.value, p.sigma, EIGHT_SHOTS_TRUTH[i]);
+    EXPECT_NEAR(p.value, EIGHT_SHOTS_TRUTH[i], 4.0 * p.sigma) << p.name;
   }
   std::printf("chi2 %.1f for %d degrees of freedom: %.3f per degree\n", 2.0 * fit.final_cost, fit.degrees_of_freedom,
               fit.chi2_per_dof);
   EXPECT_EQ(fit.degrees_of_freedom, static_cast<int>(fit.residuals.size()) - 3);
   EXPECT_NEAR(fit.chi2_per_dof, 1.0, 0.15);
   EXPECT_TRUE(fit.explains_data);
+}
+}  // namespace
+
+TEST(TrackFit, AFitReportsItsChiSquarePerDegreeOfFreedom)
+{
+  const auto fitted = bsp::fitTracks(bsp::ShotConfiguration{}, motionConstantsFromTheDefaults(), eightTrackedShots(36),
+                                     CAMERA_SIGMA, convergingFit());
+  ASSERT_TRUE(fitted.ok()) << fitted.error().describe();
+  expectTheTruthExplained(fitted->fit);
+}
+
+// The local minimum the calibration issue reports: of 80 draws of its eight shots, the one of seed 31 takes a single
+// local fit from the defaults to μ_s 0.154, μ_r 0.0118, e 0.700 — "converged", with χ² 300 times its degrees of
+// freedom. The fit says it does not explain the data, and by default searches on from more starts to the truth.
+TEST(TrackFit, ALocalMinimumIsNotAnsweredAsTheFit)
+{
+  const std::vector<bsp::ObservedShot> shots = eightTrackedShots(31);
+  bsp::FitOptions single = convergingFit();
+  single.escalate = false;
+  const auto stuck =
+      bsp::fitTracks(bsp::ShotConfiguration{}, motionConstantsFromTheDefaults(), shots, CAMERA_SIGMA, single);
+  ASSERT_TRUE(stuck.ok()) << stuck.error().describe();
+  EXPECT_GT(stuck->fit.chi2_per_dof, 10.0);
+  EXPECT_FALSE(stuck->fit.explains_data);
+  EXPECT_NE(stuck->fit.message.find("not explain"), std::string::npos) << stuck->fit.message;
+  EXPECT_GT(std::abs(stuck->fit.parameters[0].value - EIGHT_SHOTS_TRUTH[0]), 0.01);  // the minimum is a wrong one
+
+  const auto searched =
+      bsp::fitTracks(bsp::ShotConfiguration{}, motionConstantsFromTheDefaults(), shots, CAMERA_SIGMA, convergingFit());
+  ASSERT_TRUE(searched.ok()) << searched.error().describe();
+  expectTheTruthExplained(searched->fit);
 }

@@ -44,6 +44,10 @@ struct FitOptions
   /// χ² far above its degrees of freedom, FitResult::explains_data), the search goes on from at least
   /// ESCALATED_STARTS points within the budget.
   int starts = 1;
+  /// Whether a fit that does not explain its data searches on from ESCALATED_STARTS points (above). False: the
+  /// answer is the best end of `starts` local fits, however far it leaves the data (a quick look, or a study of the
+  /// local minima themselves).
+  bool escalate = true;
   int max_iterations = 50;  ///< of each local fit
   /// Threads that evaluate the residual blocks side by side (fitLeastSquares with blocks), at most 64.
   int threads = 1;
