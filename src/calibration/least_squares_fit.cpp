@@ -11,6 +11,7 @@
 #include <set>
 #include <string>
 
+#include "billiard_shot_planner/core/validation.hpp"
 #include "parameter_sensitivity.hpp"
 #include "starting_points.hpp"
 
@@ -42,9 +43,6 @@ private:
   mutable Eigen::VectorXd scratch_;
   int residual_count_;
 };
-
-constexpr int MAX_STARTS = 10000;
-constexpr int MAX_THREADS = 64;
 
 using CostFunction = ceres::DynamicNumericDiffCostFunction<ResidualFunctor, ceres::CENTRAL>;
 
@@ -133,15 +131,7 @@ Status validate(const std::vector<FitParameter>& parameters, int residual_count,
   if (residual_count < static_cast<int>(parameters.size()))
     return invalidArgument("residual_count", "fewer observations (" + std::to_string(residual_count) +
                                                  ") than parameters (" + std::to_string(parameters.size()) + ")");
-  if (!(options.identifiable_relative_sigma > 0.0) || !(options.robust_loss_sigmas >= 0.0) ||
-      options.max_iterations < 1 || !(options.relative_step > 0.0 && options.relative_step <= 0.1) ||
-      options.starts < 1 || options.starts > MAX_STARTS || options.threads < 1 || options.threads > MAX_THREADS ||
-      !(options.max_seconds > 0.0 && options.max_seconds <= 3600.0))
-    return invalidArgument("options",
-                           "identifiable_relative_sigma > 0, robust_loss_sigmas ≥ 0, max_iterations ≥ 1, "
-                           "relative_step in (0, 0.1], starts in [1, 10000], threads in [1, 64] and "
-                           "max_seconds in (0, 3600] are required");
-  return {};
+  return validate(options);
 }
 
 /// The residuals at `values`, and their Jacobian when `jacobian` is given; false where they cannot be evaluated.
@@ -394,6 +384,23 @@ void localFits(const Model& model, const std::vector<FitParameter>& parameters,
 }
 
 }  // namespace
+
+Status validate(const FitOptions& options)
+{
+  if (!(options.max_seconds > 0.0 && options.max_seconds <= MAX_FIT_SECONDS))
+    return invalidArgument("max_seconds", "must be in (0, " + formatNumber(MAX_FIT_SECONDS) + "] s, got " +
+                                              formatNumber(options.max_seconds));
+  return firstError(
+      {requireWithin(options.starts, 1, MAX_FIT_STARTS, "starts", "starting points of the search"),
+       requireWithin(options.threads, 1, MAX_FIT_THREADS, "threads", "threads evaluating the residuals"),
+       requireWithin(options.robust_loss_sigmas, 0.0, std::numeric_limits<double>::max(), "robust_loss_sigmas",
+                     "0: plain least squares"),
+       requireWithin(options.identifiable_relative_sigma, std::numeric_limits<double>::min(),
+                     std::numeric_limits<double>::max(), "identifiable_relative_sigma", "a fraction > 0"),
+       requireWithin(options.max_iterations, 1, std::numeric_limits<int>::max(), "max_iterations", "of each local fit"),
+       requireWithin(options.relative_step, std::numeric_limits<double>::min(), 0.1, "relative_step",
+                     "of the central differences")});
+}
 
 Expected<FitResult> fitLeastSquares(const std::vector<FitParameter>& parameters, int residual_count,
                                     const ResidualFunction& residuals, const FitOptions& options)

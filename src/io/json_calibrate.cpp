@@ -210,17 +210,20 @@ Status readFitOptions(const json& request, double& position_noise, FitOptions& o
                                             {"robust_loss_sigmas", &options.robust_loss_sigmas}});
       !status)
     return status;
-  if (!(budget_ms > 0.0 && budget_ms <= 3.6e6))
-    return invalidArgument("budget_ms", "must be in (0, 3 600 000]");
-  if (!(options.robust_loss_sigmas >= 0.0 && std::isfinite(options.robust_loss_sigmas)))
-    return invalidArgument("robust_loss_sigmas", "must be finite and ≥ 0 (0: plain least squares)");
-  options.max_seconds = budget_ms * 1e-3;
-  if (!(starts >= 1 && starts <= 10000 && starts == std::floor(starts)))
-    return invalidArgument("starts", "must be an integer in [1, 10000]");
-  if (!(threads >= 1 && threads <= 64 && threads == std::floor(threads)))
-    return invalidArgument("threads", "must be an integer in [1, 64]");
+  // JSON numbers are doubles: a count must be a whole one, and in int's range before it is converted; the core
+  // checks the ranges (validate(FitOptions)), its max_seconds being this request's budget_ms.
+  for (auto [name, count] : {std::pair{"starts", starts}, std::pair{"threads", threads}})
+    if (!(count == std::floor(count) && std::abs(count) <= 1e9))
+      return invalidArgument(name, "must be a whole number, got " + formatNumber(count));
   options.starts = static_cast<int>(starts);
   options.threads = static_cast<int>(threads);
+  options.max_seconds = budget_ms * 1e-3;
+  if (Status status = validate(options); !status)
+  {
+    if (status.error().field == "max_seconds")
+      return invalidArgument("budget_ms", "must be in (0, " + formatNumber(MAX_FIT_SECONDS * 1e3) + "] ms");
+    return status;
+  }
   return {};
 }
 }  // namespace

@@ -107,14 +107,8 @@ FitOptions fitOptions(int starts, double max_seconds, int threads, double robust
   options.max_seconds = max_seconds;
   options.threads = threads;
   options.robust_loss_sigmas = robust_loss_sigmas;
-  if (starts < 1 || starts > 1000)
-    raise(invalidArgument("starts", "must be in [1, 1000]"));
-  if (!(max_seconds > 0.0 && max_seconds <= 3600.0))
-    raise(invalidArgument("max_seconds", "must be in (0, 3600] s"));
-  if (threads < 1 || threads > 64)
-    raise(invalidArgument("threads", "must be in [1, 64]"));
-  if (!(robust_loss_sigmas >= 0.0 && std::isfinite(robust_loss_sigmas)))
-    raise(invalidArgument("robust_loss_sigmas", "must be >= 0 (0: plain least squares)"));
+  if (Status status = validate(options); !status)
+    raise(status.error());  // the core's names are the keyword arguments'
   return options;
 }
 

@@ -16,9 +16,7 @@ namespace
 {
 constexpr double DEFAULT_POSITION_NOISE = 0.002;  // m, a camera tracker's typical error
 constexpr double DEFAULT_BUDGET = 60.0;           // s
-constexpr double MAX_BUDGET = 3600.0;             // s
-constexpr int MAX_STARTS = 1000;
-constexpr double FEEDBACK_RATE = 10.0;  // Hz, at most
+constexpr double FEEDBACK_RATE = 10.0;            // Hz, at most
 
 template <class Response>
 bool failWith(const Error& error, const char* service, Response& response)
@@ -51,17 +49,18 @@ Status readFitOptions(const FitCalibrationGoal& request, int threads, double& po
   position_noise = request.position_noise == 0.0 ? DEFAULT_POSITION_NOISE : request.position_noise;
   if (!(std::isfinite(position_noise) && position_noise > 0.0))
     return invalidArgument("position_noise", "must be > 0 m (0: 0.002 m)");
-  if (request.starts < 0 || request.starts > MAX_STARTS)
-    return invalidArgument("starts", "must be in [1, 1000] (0: 1)");
-  const double budget = request.budget == 0.0 ? DEFAULT_BUDGET : request.budget;
-  if (!(budget > 0.0 && budget <= MAX_BUDGET))
-    return invalidArgument("budget", "must be in (0, 3600] s (0: 60 s)");
-  if (!(std::isfinite(request.robust_loss_sigmas) && request.robust_loss_sigmas >= 0.0))
-    return invalidArgument("robust_loss_sigmas", "must be finite and >= 0 (0: plain least squares)");
+  // 0 asks for the default; the core checks the ranges (validate(FitOptions)), its max_seconds being the goal's budget.
   options.starts = request.starts == 0 ? 1 : request.starts;
-  options.max_seconds = budget;
+  options.max_seconds = request.budget == 0.0 ? DEFAULT_BUDGET : request.budget;
   options.robust_loss_sigmas = request.robust_loss_sigmas;
   options.threads = threads;
+  if (Status status = validate(options); !status)
+  {
+    Error error = status.error();
+    if (error.field == "max_seconds")
+      error.field = "budget";
+    return error;
+  }
   return {};
 }
 

@@ -211,6 +211,26 @@ TEST(LeastSquaresFit, BadInputIsRefusedNamingTheField)
   EXPECT_EQ(field({{"", 0.0}}, 4), "parameters[0]");
   EXPECT_EQ(field({}, 4), "parameters");
   EXPECT_EQ(field({{"a", 0.0}, {"b", 0.0}, {"c", 0.0}}, 2), "residual_count");
+  // Each option is named by its own field, for the front ends to map to theirs.
+  const std::pair<void (*)(bsp::FitOptions&), const char*> options[] = {
+      {[](bsp::FitOptions& o) { o.starts = 0; }, "starts"},
+      {[](bsp::FitOptions& o) { o.starts = bsp::MAX_FIT_STARTS + 1; }, "starts"},
+      {[](bsp::FitOptions& o) { o.threads = bsp::MAX_FIT_THREADS + 1; }, "threads"},
+      {[](bsp::FitOptions& o) { o.max_seconds = 0.0; }, "max_seconds"},
+      {[](bsp::FitOptions& o) { o.max_seconds = NAN; }, "max_seconds"},
+      {[](bsp::FitOptions& o) { o.robust_loss_sigmas = -1.0; }, "robust_loss_sigmas"},
+      {[](bsp::FitOptions& o) { o.identifiable_relative_sigma = 0.0; }, "identifiable_relative_sigma"},
+      {[](bsp::FitOptions& o) { o.max_iterations = 0; }, "max_iterations"},
+      {[](bsp::FitOptions& o) { o.relative_step = 0.5; }, "relative_step"},
+  };
+  for (const auto& [spoil, name] : options)
+  {
+    bsp::FitOptions spoilt;
+    spoil(spoilt);
+    const auto fit = bsp::fitLeastSquares({{"a", 0.0}}, 4, zero, spoilt);
+    ASSERT_FALSE(fit.ok()) << name;
+    EXPECT_EQ(fit.error().field, name);
+  }
   const auto failing =
       bsp::fitLeastSquares({{"a", 0.0}}, 4, [](const std::vector<double>&, Eigen::VectorXd&) { return false; });
   ASSERT_FALSE(failing.ok());

@@ -958,4 +958,14 @@ TEST(ImpactSolve, CalibrateBadInputNamesTheObservation)
   bad = good;
   bad["budget_ms"] = -1;
   expectField(bad, "budget_ms");
+  // The core's bounds of the fit's options (validate(FitOptions)), named in the request's terms.
+  for (const auto& [key, value] : {std::pair{"starts", 2.5}, std::pair{"starts", 10001.0}, std::pair{"threads", 65.0},
+                                   std::pair{"robust_loss_sigmas", -1.0}, std::pair{"budget_ms", 3.6e6 + 1}})
+  {
+    bad = good;
+    bad[key] = value;
+    const SolverRun run = runSolver(bad.dump());
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_NE(run.output.find(std::string("invalid_argument: ") + key + ":"), std::string::npos) << run.output;
+  }
 }

@@ -47,6 +47,8 @@ def test_bad_input_names_the_field():
         (dict(shots=[{"cue_ball": (0, 0), "tracks": {}}], parameters=["motion/sliding_friction"]), "shots[0].stroke"),
         (dict(shots=good, parameters=["motion/sliding_friction"], position_sigma=math.nan), "position_sigma"),
         (dict(shots=good, parameters=["motion/sliding_friction"], threads=0), "threads"),
+        (dict(shots=good, parameters=["motion/sliding_friction"], starts=10001), "starts"),
+        (dict(shots=good, parameters=["motion/sliding_friction"], max_seconds=0), "max_seconds"),
     ]
     for kwargs, field in cases:
         with pytest.raises(bsp.Error) as raised:

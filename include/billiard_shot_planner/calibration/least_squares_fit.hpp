@@ -66,6 +66,15 @@ struct FitOptions
 
 /// The starting points a fit that does not explain its data searches from at least (FitOptions::starts).
 constexpr int ESCALATED_STARTS = 32;
+/// The bounds of FitOptions that validate() holds.
+constexpr int MAX_FIT_STARTS = 10000;
+constexpr int MAX_FIT_THREADS = 64;
+constexpr double MAX_FIT_SECONDS = 3600.0;
+
+/// The options checked, each error naming its own field ("starts", "threads", "max_seconds",
+/// "robust_loss_sigmas", "identifiable_relative_sigma", "max_iterations", "relative_step"): the one check every
+/// front end relies on, mapping the names to its own ("budget_ms").
+Status validate(const FitOptions& options);
 
 struct FittedParameter
 {
