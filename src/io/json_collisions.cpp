@@ -97,17 +97,13 @@ Status readSurface(const json& request, const std::string& key, SurfaceContact& 
 /// The ball–ball friction: a constant "friction", or "friction_model": "alciatore" (or "constant" with "friction").
 Status readBallBallFriction(const json& request, BallCollision& collision)
 {
-  const json fields = request.contains("ball_ball") ? request.at("ball_ball") : json::object();
-  if (fields.contains("friction"))
+  const json fields = request.value("ball_ball", json::object());
+  if (Status status = checkFrictionModel(fields); !status)
+    return status;
+  if (fields.is_object() && fields.contains("friction"))
     collision.friction_model = BallBallFriction::Constant;
-  if (!fields.contains("friction_model"))
-    return {};
-  const json& model = fields.at("friction_model");
-  if (model == "alciatore" && !fields.contains("friction"))
+  else if (fields.is_object() && fields.contains("friction_model"))
     collision.friction_model = BallBallFriction::Alciatore;
-  else if (model != "constant" || !fields.contains("friction"))
-    return invalidArgument("ball_ball.friction_model",
-                           "must be \"alciatore\" (without friction) or \"constant\" (with friction)");
   return {};
 }
 
@@ -160,6 +156,16 @@ Expected<BallCollision> ballCollisionFromJson(const json& request)
   if (!base)
     return base.error();
   BallCollision collision = base.value();
+  // The cloth's stiffness relative to the balls', as a table's ball_ball gives it or at the top level: one of them.
+  if (const json fields = request.value("ball_ball", json::object());
+      fields.is_object() && fields.contains("cloth_stiffness_ratio"))
+  {
+    if (request.contains("stiffness_ratio"))
+      return invalidArgument("stiffness_ratio", "give it once: here or as ball_ball.cloth_stiffness_ratio");
+    if (Status status = readNumbers(fields, {{"cloth_stiffness_ratio", &collision.stiffness_ratio}}, "ball_ball");
+        !status)
+      return status.error();
+  }
   if (Status status =
           firstError({readBalls(request, collision), readSurface(request, "ball_ball", collision.ball_ball),
                       readSurface(request, "cloth", collision.cloth), readBallBallFriction(request, collision),

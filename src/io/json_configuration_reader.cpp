@@ -24,6 +24,8 @@ Expected<Pocket> pocketOf(const json& item, const std::string& field)
 {
   if (!item.is_object())
     return invalidArgument(field, "must be an object");
+  if (Status known = onlyKnownKeys(item, {"centre", "radius"}, field); !known)
+    return known.error();
   auto centre = numbers(item, "centre");
   if (!centre)
     return nested(field, centre.error());
@@ -69,12 +71,20 @@ public:
     value = node->get<bool>();
   }
 
-  /// A name that is not an option (or not a name) is left for visitConfiguration to refuse, listing the options.
-  void choice(const std::string& path, std::string& value, const std::vector<std::string>& /*options*/) override
+  /// A name that is not an option is left for visitConfiguration to refuse, listing the options.
+  void choice(const std::string& path, std::string& value, const std::vector<std::string>& options) override
   {
     const auto [place, node] = find(path);
-    if (node)
-      value = node->is_string() ? node->get<std::string>() : node->dump();
+    if (!node)
+      return;
+    if (!node->is_string())
+    {
+      std::string names;
+      for (const std::string& option : options)
+        names += (names.empty() ? "\"" : ", \"") + option + "\"";
+      return fail(invalidArgument(place, "must be one of " + names));
+    }
+    value = node->get<std::string>();
   }
 
   void pockets(const std::string& path, std::vector<Pocket>& pockets, const Table& table) override
@@ -141,6 +151,8 @@ Status onlyVisitedKeys(const json& node, const std::string& place, const std::se
   for (const auto& item : node.items())
   {
     const std::string name = place + "." + item.key();
+    if (item.key().find('.') != std::string::npos)
+      return invalidArgument(name, "is not a field here: a key is a name, not a dotted path");
     if (!visited.count(name))
       return unknownField(name, "a field here");
     if (Status status = onlyVisitedKeys(item.value(), name, visited); !status)
@@ -149,20 +161,19 @@ Status onlyVisitedKeys(const json& node, const std::string& place, const std::se
   return {};
 }
 
-/// "friction_model": "alciatore" goes without a "friction", "constant" with one (docs/cli.md).
-Status checkFrictionModel(const json& request)
+/// The request's objects that hold fields of the configuration ("table", "cue_contact", "ball_ball"): the first
+/// steps of the places that have more than one.
+std::vector<std::string> requestSections()
 {
-  if (!request.contains("ball_ball") || !request.at("ball_ball").is_object())
-    return {};
-  const json& fields = request.at("ball_ball");
-  if (!fields.contains("friction_model"))
-    return {};
-  const json& model = fields.at("friction_model");
-  const bool friction = fields.contains("friction");
-  if ((model == "alciatore" && !friction) || (model == "constant" && friction))
-    return {};
-  return invalidArgument("ball_ball.friction_model",
-                         "must be \"alciatore\" (without friction) or \"constant\" (with friction)");
+  std::vector<std::string> sections;
+  for (const std::string& path : configurationFieldPaths())
+    if (const std::optional<std::string> place = requestPlace(path); place && place->find('.') != std::string::npos)
+    {
+      const std::string first = pathSteps(*place).front();
+      if (std::find(sections.begin(), sections.end(), first) == sections.end())
+        sections.push_back(first);
+    }
+  return sections;
 }
 
 /// The configuration a request starts from: the defaults, a table file's table, contacts and motion (its balls are
@@ -199,16 +210,40 @@ std::optional<std::string> requestPlace(const std::string& path)
   return path;
 }
 
-std::vector<std::string> requestConfigurationFields()
+std::vector<std::string> requestFieldsOf(const std::vector<ConfigurationPart>& parts)
 {
-  std::vector<std::string> fields{"table_file", "table_contact"};
-  for (const std::string& path : configurationFieldPaths())
-    if (const std::optional<std::string> place = requestPlace(path))
+  const auto in_part = [](const std::string& path, ConfigurationPart part)
+  {
+    const bool ball = path == "ball_mass" || path == "ball_radius";
+    switch (part)
     {
-      const std::string first = pathSteps(*place).front();
-      if (std::find(fields.begin(), fields.end(), first) == fields.end())
-        fields.push_back(first);
+      case ConfigurationPart::Strike:
+        return ball || startsWith(path, "table.cloth.") ||
+               !(startsWith(path, "table.") || startsWith(path, "motion.") || startsWith(path, "ball_ball.") ||
+                 startsWith(path, "solver."));
+      case ConfigurationPart::Motion:
+        return ball || startsWith(path, "table.") || startsWith(path, "motion.");
+      case ConfigurationPart::BallContact:
+        return startsWith(path, "ball_ball.");
     }
+    return false;
+  };
+  std::vector<std::string> fields;
+  if (!parts.empty())
+    fields.emplace_back("table_file");
+  const auto add = [&fields](const std::string& field)
+  {
+    if (std::find(fields.begin(), fields.end(), field) == fields.end())
+      fields.push_back(field);
+  };
+  for (ConfigurationPart part : parts)
+  {
+    if (part == ConfigurationPart::Strike)
+      add("table_contact");
+    for (const std::string& path : configurationFieldPaths())
+      if (const std::optional<std::string> place = requestPlace(path); place && in_part(path, part))
+        add(pathSteps(*place).front());
+  }
   return fields;
 }
 
@@ -224,13 +259,14 @@ Expected<ShotConfiguration> requestConfiguration(const json& request)
   auto base = requestBase(request);
   if (!base)
     return base.error();
-  if (Status status = checkFrictionModel(request); !status)
+  if (Status status = checkFrictionModel(request.value("ball_ball", json::object())); !status)
     return status.error();
   ShotConfiguration configuration = base.value();
   JsonConfigurationReader reader(request, configuration.table);
   if (Status status = visitConfiguration(configuration, reader); !status)
     return inRequestLayout(status.error());
-  for (const char* section : {"table", "cue_contact", "ball_ball"})
+  static const std::vector<std::string> sections = requestSections();
+  for (const std::string& section : sections)
     if (request.contains(section))
       if (Status status = onlyVisitedKeys(request.at(section), section, reader.visited()); !status)
         return status.error();

@@ -18,9 +18,18 @@ namespace json_io
 /// "cue_contact.law.type"). "cue_end_mass" is kg or "inf", a tip held on the cue's axis (the paper's shooter).
 std::optional<std::string> requestPlace(const std::string& configuration_path);
 
-/// The top-level fields of the request layout: the first step of every field's place, "table_file" and
-/// "table_contact".
-std::vector<std::string> requestConfigurationFields();
+/// The parts of a request's configuration a problem reads: the strike's (the cue, the ball, the tip's contact, the
+/// stiffness ratio and the cloth, in "table" or as "table_contact"), the motion's (the ball, the table and the
+/// motion's constants), the ball–ball contact's.
+enum class ConfigurationPart
+{
+  Strike,
+  Motion,
+  BallContact,
+};
+
+/// The top-level fields of those parts in the request layout, with "table_file", which gives them all.
+std::vector<std::string> requestFieldsOf(const std::vector<ConfigurationPart>& parts);
 
 /// An error about the configuration in the request's own names ("motion.sliding_friction" → "sliding_friction").
 Error inRequestLayout(Error error);

@@ -1,5 +1,7 @@
 #include "json_fields.hpp"
 
+#include "billiard_shot_planner/shot/configuration_fields.hpp"
+
 #include <algorithm>
 
 namespace billiard_shot_planner
@@ -124,16 +126,25 @@ Expected<TableFile> tableFile(const json& request)
   return loadTableFile(request.at("table_file").get<std::string>());
 }
 
-Expected<NormalLaw> normalLawFromJson(const json& law, const std::string& prefix)
+Expected<NormalLaw> normalLawFromJson(const json& law, const std::string& prefix, const NormalLaw& base)
 {
   if (!law.is_object())
     return invalidArgument(prefix, "must be an object {\"type\": ..., <parameters>}");
-  if (!law.contains("type") || !law.at("type").is_string())
-    return invalidArgument(prefix + ".type", "is required, a string naming the law");
-  auto chosen = lawOfType(law.at("type").get<std::string>(), prefix);
-  if (!chosen)
-    return chosen.error();
-  NormalLaw result = chosen.value();
+  NormalLaw result = base;
+  if (law.contains("type"))
+  {
+    if (!law.at("type").is_string())
+      return invalidArgument(prefix + ".type", "must be a string naming the law");
+    // Another type starts from its own defaults; the same type keeps the parameters it has, as the configuration's
+    // readers do (visitConfiguration).
+    if (law.at("type").get<std::string>() != lawType(base))
+    {
+      auto chosen = lawOfType(law.at("type").get<std::string>(), prefix);
+      if (!chosen)
+        return chosen.error();
+      result = chosen.value();
+    }
+  }
   Status status;
   visitLawParameters(result,
                      [&](const char* name, double& value)
@@ -145,7 +156,7 @@ Expected<NormalLaw> normalLawFromJson(const json& law, const std::string& prefix
     return status.error();
   for (const auto& item : law.items())
     if (Status key = requireLawKey(result, item.key(), prefix); !key)
-      return key.error();
+      return unknownField(prefix + "." + item.key(), "a parameter of the law");
   if (Status valid = validate(result, prefix); !valid)
     return valid.error();
   return result;
@@ -181,11 +192,23 @@ Status readSurfaceContact(const json& fields, const std::string& prefix, Surface
     return numbers;
   if (!fields.contains("law"))
     return {};
-  auto law = normalLawFromJson(fields.at("law"), prefix + ".law");
+  auto law = normalLawFromJson(fields.at("law"), prefix + ".law", surface.normal_law);
   if (!law)
     return law.error();
   surface.normal_law = law.value();
   return {};
+}
+
+Status checkFrictionModel(const json& ball_ball)
+{
+  if (!ball_ball.is_object() || !ball_ball.contains("friction_model"))
+    return {};
+  const json& model = ball_ball.at("friction_model");
+  const bool friction = ball_ball.contains("friction");
+  if ((model == "alciatore" && !friction) || (model == "constant" && friction))
+    return {};
+  return invalidArgument("ball_ball.friction_model",
+                         "must be \"alciatore\" (without friction) or \"constant\" (with friction)");
 }
 
 Error nested(const std::string& prefix, Error error)

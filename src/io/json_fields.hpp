@@ -55,15 +55,18 @@ Expected<Stroke> strokeFromJson(const json& cue, const std::string& prefix, doub
 /// The request's "table_file" (config/tables/snooker_mathavan.yaml): the table, its balls, its ball–ball contact and
 /// its cloth's motion constants, which the request's own fields override. Call only when the request has one.
 Expected<TableFile> tableFile(const json& request);
-/// "law": {"type": "elastic_plastic", "yield_speed": 1.2}: a type of NormalLaw and its parameters, any absent one at
-/// the law's default; unknown keys refused.
-Expected<NormalLaw> normalLawFromJson(const json& law, const std::string& prefix);
+/// "law": {"type": "elastic_plastic", "yield_speed": 1.2} over `base` (the contact's law so far): a type other than
+/// base's starts from its defaults, the same type (or none given) keeps base's parameters, and the given ones
+/// replace them; unknown keys refused, a parameter the law lacks named as such.
+Expected<NormalLaw> normalLawFromJson(const json& law, const std::string& prefix, const NormalLaw& base = {});
 /// The law as normalLawFromJson reads it.
 json normalLawJson(NormalLaw law);
 /// object[key] as an object (an empty one when absent and optional).
 Expected<json> object(const json& parent, const std::string& key, bool required);
 /// The optional "solver" object.
 Expected<SolverOptions> solverOptions(const json& request);
+/// A "ball_ball" object's friction model: "alciatore" goes without a "friction", "constant" with one (docs/cli.md).
+Status checkFrictionModel(const json& ball_ball);
 /// An error from a nested object, its field prefixed with the object's name ("cue_contact.friction").
 Error nested(const std::string& prefix, Error error);
 

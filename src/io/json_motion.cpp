@@ -1,10 +1,8 @@
 #include <optional>
 #include <string>
 
-#include "billiard_shot_planner/io/table_yaml.hpp"
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "billiard_shot_planner/scenarios/cue_strike.hpp"
-#include "billiard_shot_planner/shot/configuration_fields.hpp"
 #include "json_configuration_reader.hpp"
 #include "json_fields.hpp"
 #include "json_motion.hpp"

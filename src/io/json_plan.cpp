@@ -5,6 +5,7 @@
 #include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/planning/shot_planner.hpp"
 #include "json_configuration.hpp"
+#include "json_configuration_reader.hpp"
 #include "json_fields.hpp"
 #include "json_table.hpp"
 
@@ -155,7 +156,7 @@ Error inRequestTerms(Error error)
                                std::pair{"limits.theta", "limits.theta_deg"}, std::pair{"budget", "budget_ms"}})
     if (error.field == core)
       error.field = request;
-  return error;
+  return inRequestLayout(error);  // the configuration's motion constants sit at the request's top level
 }
 
 json strokeJson(const Stroke& stroke)

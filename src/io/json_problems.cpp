@@ -16,54 +16,57 @@ namespace
 using nlohmann::json;
 using Solver = Expected<json> (*)(const json&, const SolverOptions&);
 
-/// A problem: its solver and the top-level fields it reads besides "problem" and "solver" (docs/cli.md, Problems);
-/// one that reads a configuration (`configuration`) also takes every field of the configuration's request layout.
+using json_io::ConfigurationPart;
+
+/// A problem: its solver, the top-level fields it reads besides "problem" and "solver" (docs/cli.md, Problems) and
+/// the parts of the configuration it reads, whose fields it takes in the request's layout.
 struct Problem
 {
   const char* name;
   Solver solve;
   std::vector<std::string> fields;
-  bool configuration;
+  std::vector<ConfigurationPart> configuration;
 };
 
 const std::vector<Problem>& problems()
 {
+  using Part = ConfigurationPart;
   static const std::vector<Problem> known{
-      {"ball_ball_table", json_io::solveBallBallTable, {"e1", "e2", "m1", "m2", "stiffness_ratio", "v0"}, false},
-      {"chain", json_io::solveChain, {"masses", "restitution", "stiffness", "velocities", "wall"}, false},
+      {"ball_ball_table", json_io::solveBallBallTable, {"e1", "e2", "m1", "m2", "stiffness_ratio", "v0"}, {}},
+      {"chain", json_io::solveChain, {"masses", "restitution", "stiffness", "velocities", "wall"}, {}},
       {"ball_ball",
        json_io::solveBallBall,
        {"ball_ball", "ball_mass", "ball_radius", "balls", "cloth", "stiffness_ratio", "table_file",
         "touching_tolerance"},
-       false},
+       {}},
       {"cue_strike",
        json_io::solveCueStrike,
        {"ball_centre", "cue", "cue_axis_point", "cue_direction", "cue_speed", "hit_normal"},
-       true},
+       {Part::Strike}},
       {"ball_table",
        json_io::solveBallTable,
        {"angular_velocity", "mass", "radius", "table", "table_file", "velocity"},
-       false},
-      {"ball_motion", json_io::solveBallMotion, {"omega", "position", "sample_spacing", "v"}, true},
+       {}},
+      {"ball_motion", json_io::solveBallMotion, {"omega", "position", "sample_spacing", "v"}, {Part::Motion}},
       {"shot",
        json_io::solveShot,
        {"ball_centre", "ball_position", "cue", "cue_axis_point", "cue_direction", "cue_speed", "hit_normal",
         "sample_spacing"},
-       true},
+       {Part::Strike, Part::Motion}},
       {"table_shot",
        json_io::solveTableShot,
        {"ball_centre", "balls", "cue", "cue_axis_point", "cue_ball", "cue_direction", "cue_speed", "hit_normal",
         "sample_spacing", "samples"},
-       true},
+       {Part::Strike, Part::Motion, Part::BallContact}},
       {"plan_shot",
        json_io::solvePlanShot,
        {"balls", "budget_ms", "cue_ball", "cue_region", "limits", "noise", "pocket", "rollouts", "rules", "seed",
         "target", "threads"},
-       true},
+       {Part::Strike, Part::Motion, Part::BallContact}},
       {"calibrate",
        json_io::solveCalibrate,
        {"budget_ms", "fit", "position_noise", "robust_loss_sigmas", "shots", "starts", "threads"},
-       true},
+       {Part::Strike, Part::Motion, Part::BallContact}},
   };
   return known;
 }
@@ -72,14 +75,13 @@ const std::vector<Problem>& problems()
 /// ignored and the answer computed without it.
 Status onlyFieldsOf(const Problem& problem, const json& request)
 {
-  static const std::vector<std::string> configuration = json_io::requestConfigurationFields();
+  const std::vector<std::string> configuration = json_io::requestFieldsOf(problem.configuration);
   for (const auto& item : request.items())
   {
     const std::string& key = item.key();
     const auto listed = [&key](const std::vector<std::string>& names)
     { return std::find(names.begin(), names.end(), key) != names.end(); };
-    if (key == "problem" || key == "solver" || listed(problem.fields) ||
-        (problem.configuration && listed(configuration)))
+    if (key == "problem" || key == "solver" || listed(problem.fields) || listed(configuration))
       continue;
     return invalidArgument(
         key, "is not a field of the problem \"" + std::string(problem.name) + "\" (docs/cli.md lists its fields)");

@@ -34,7 +34,10 @@ Expected<ParameterFile> parseParameterFile(const std::string& text, const ShotCo
     return status.error();
   for (const auto& item : root)
   {
-    const std::string key = item.first.as<std::string>();
+    auto named = yaml_io::keyOf(item.first, "parameter_file");
+    if (!named)
+      return named.error();
+    const std::string& key = named.value();
     if (!reader.visited().count(key))
       file.other_keys.push_back(key);
     else if (Status status =

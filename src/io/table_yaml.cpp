@@ -47,6 +47,25 @@ Error inFileTerms(Error error)
   return error;
 }
 
+/// The parts of the configuration a table file gives, checked: its table, its ball–ball contact, the motion's
+/// constants and its balls; the cushion's height against the balls only when the file names them (a caller that
+/// does not gives its own ball, which is checked where it is used).
+Status validateTableFile(const ShotConfiguration& c, bool names_balls)
+{
+  Status motion = validate(c.motion);
+  if (!motion)
+  {
+    Error error = motion.error();
+    error.field = "motion." + error.field;
+    motion = error;
+  }
+  return firstError(
+      {validate(c.table, "table"), validate(c.ball_contact.ball_ball, "ball_ball"),
+       requireStiffnessRatio(c.ball_contact.stiffness_ratio, "ball_ball.cloth_stiffness_ratio"), motion,
+       requirePositive(c.ball_mass, "ball_mass"), requirePositive(c.ball_radius, "ball_radius"),
+       names_balls ? validateCushionHeight(c.table.cushion_height, c.ball_radius, "table.cushion_height") : Status{}});
+}
+
 TableFile tableFileOf(const ShotConfiguration& configuration)
 {
   TableFile file;
@@ -76,16 +95,11 @@ Expected<TableFile> parseTableFile(const std::string& text)
   yaml_io::YamlConfigurationReader reader(root, configuration.table, tableFilePlace);
   if (Status status = visitConfiguration(configuration, reader); !status)
     return status.error();
-  for (const auto& item : root)
-  {
-    const std::string key = item.first.as<std::string>();
-    const std::string what = "a field of a table file (docs/cli.md, Table files)";
-    if (!reader.visited().count(key))
-      return invalidArgument(key, "is not " + what);
-    if (Status status = yaml_io::onlyVisitedKeys(item.second, key, reader.visited(), what); !status)
-      return status.error();
-  }
-  if (Status status = validate(configuration); !status)
+  const std::string what = "a field of a table file (docs/cli.md, Table files)";
+  if (Status status = yaml_io::onlyVisitedKeys(root, "", reader.visited(), what); !status)
+    return status.error();
+  const YAML::Node& file = root;  // a const node: looking a key up does not add it
+  if (Status status = validateTableFile(configuration, file["balls"].IsDefined()); !status)
     return inFileTerms(status.error());
   return tableFileOf(configuration);
 }

@@ -131,6 +131,14 @@ YAML::Node YamlConfigurationReader::find(const std::string& place)
   return node;
 }
 
+Expected<std::string> keyOf(const YAML::Node& key, const std::string& place)
+{
+  if (!key.IsScalar() || key.Scalar().find('.') != std::string::npos)
+    return invalidArgument(place.empty() ? "table" : place,
+                           "has a key that is not a name (a list, a map or a dotted path)");
+  return key.Scalar();
+}
+
 Status onlyVisitedKeys(const YAML::Node& node, const std::string& place, const std::set<std::string>& visited,
                        const std::string& what)
 {
@@ -138,7 +146,10 @@ Status onlyVisitedKeys(const YAML::Node& node, const std::string& place, const s
     return {};
   for (const auto& item : node)
   {
-    const std::string name = place + "." + item.first.as<std::string>();
+    auto key = keyOf(item.first, place);
+    if (!key)
+      return key.error();
+    const std::string name = place.empty() ? key.value() : place + "." + key.value();
     if (!visited.count(name))
       return unknownField(name, what);
     if (Status status = onlyVisitedKeys(item.second, name, visited, what); !status)

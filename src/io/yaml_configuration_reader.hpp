@@ -47,8 +47,13 @@ private:
   std::set<std::string> visited_;
 };
 
-/// The first key under `node` (at `place`, a map) that the reader did not look at: a misspelt constant is an error,
-/// not a default. A key under a law ("table.cushion.law.yield_speed") that the chosen law lacks says so.
+/// A map's key as a name; a key that is a list or a map (YAML allows them), or that holds a '.' (it would read as a
+/// path), is refused, named by the map's place.
+Expected<std::string> keyOf(const YAML::Node& key, const std::string& place);
+
+/// The first key under `node` (at `place`, a map; "" for the file's top level) that the reader did not look at: a
+/// misspelt constant is an error, not a default. A key under a law ("table.cushion.law.yield_speed") that the chosen
+/// law lacks says so.
 Status onlyVisitedKeys(const YAML::Node& node, const std::string& place, const std::set<std::string>& visited,
                        const std::string& what);
 

@@ -225,10 +225,6 @@ TEST(TrackFit, BadTracksAreRefusedNamingTheObservation)
   EXPECT_EQ(field({}), "shots");
 }
 
-// Eight cue-ball shots drawn with μ_s 0.19, μ_r 0.013 and cushion e 0.74 (1–3 m/s, b within ±0.3, 2 mm of noise),
-// fitted from the configuration's defaults with the default single start: the truth comes back, and the answer
-// reports its degrees of freedom and χ² per degree near 1 — χ² of n − p degrees of freedom has mean 1 per degree
-// and σ √(2/(n − p)), 0.04 here.
 namespace
 {
 /// Eight cue-ball shots of the calibration issue's study (speeds 1–3 m/s, b within ±0.3, 2 mm of noise) drawn with
@@ -281,6 +277,9 @@ void expectTheTruthExplained(const bsp::FitResult& fit)
 }
 }  // namespace
 
+// The eight shots of seed 36 fitted from the configuration's defaults with the default options: the truth comes
+// back, and the answer reports its degrees of freedom and χ² per degree near 1 — χ² of n − p degrees of freedom has
+// mean 1 per degree and σ √(2/(n − p)), 0.04 here.
 TEST(TrackFit, AFitReportsItsChiSquarePerDegreeOfFreedom)
 {
   const auto fitted = bsp::fitTracks(bsp::ShotConfiguration{}, motionConstantsFromTheDefaults(), eightTrackedShots(36),

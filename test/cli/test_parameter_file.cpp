@@ -104,6 +104,8 @@ TEST(ParameterFile, BadFilesNameTheField)
       {"cue_mass: [1, 2]", "cue_mass"},
       {"table: 5", "table"},  // a section that is not a map would hide its fields
       {"table: {cushion: {law: elastic_plastic}}", "table.cushion.law"},
+      {"? [1, 2]\n: 3", "parameter_file"},  // a key that is a list
+      {"table: {cloth: {? [1] : 2}}", "table.cloth"},
       {"table: [", "parameter_file"},
       {"- 1", "parameter_file"},
   };

@@ -89,6 +89,10 @@ TEST(TableYaml, AFileGivesItsBallsContactAndMotionAndRefusesUnknownFields)
       {"table: {}\nmotion: {gravity: 9.81}", "motion.gravity"},  // the cloth's part of the motion only
       {"table: {}\ncue_mass: 0.5", "cue_mass"},
       {"table: {}\nball_ball: {law: {type: elastic_plastic, yield_speed: -1}}", "ball_ball.law.yield_speed"},
+      {"table:\n  ? [1, 2]\n  : 3", "table"},  // a key that is a list: YAML allows it, a table file does not
+      {"table: {cloth: {? {a: 1} : 2}}", "table.cloth"},
+      {"table: {cloth: {}, cloth.friction: 0.5}", "table"},                              // a key is a name, not a path
+      {"table: {cushion_height: 0.06}\nballs: {radius: 0.02}", "table.cushion_height"},  // above the balls named
   };
   for (const auto& [text, field] : bad)
   {
@@ -96,6 +100,8 @@ TEST(TableYaml, AFileGivesItsBallsContactAndMotionAndRefusesUnknownFields)
     ASSERT_FALSE(file.ok()) << text;
     EXPECT_EQ(file.error().field, field) << text;
   }
+  // A file that names no balls is not held to the default ball: the caller's own is checked where it is used.
+  EXPECT_TRUE(bsp::parseTableFile("table: {cushion_height: 0.06}").ok());
 }
 
 // A table file and a parameter file are two layouts of the one list of configuration fields: the same constants
@@ -111,17 +117,16 @@ TEST(TableYaml, ATableFileReadsAsTheSameFieldsInAParameterFile)
   const auto parameters = bsp::parseParameterFile(table + "ball_mass: 0.16\nball_radius: 0.0285\n");
   ASSERT_TRUE(file.ok()) << file.error().describe();
   ASSERT_TRUE(parameters.ok()) << parameters.error().describe();
-  const bsp::ShotConfiguration from_file = bsp::withTableFile(bsp::ShotConfiguration{}, file.value());
   bsp::ShotConfiguration from_parameters = parameters.value().configuration;
-  bsp::ShotConfiguration from_table_file = from_file;
+  bsp::ShotConfiguration from_table_file = bsp::withTableFile(bsp::ShotConfiguration{}, file.value());
   const std::vector<bsp::NamedParameter> expected = bsp::numericParameters(from_parameters);
   const std::vector<bsp::NamedParameter> read = bsp::numericParameters(from_table_file);
   ASSERT_EQ(read.size(), expected.size());
   for (std::size_t i = 0; i < read.size(); ++i)
     EXPECT_EQ(*read[i].value, *expected[i].value) << read[i].name;
-  EXPECT_EQ(from_file.motion.rolling_model, bsp::RollingModel::Pooltool);
-  EXPECT_EQ(from_file.ball_contact.friction_model, bsp::BallBallFriction::Constant);
-  ASSERT_EQ(from_file.table.pockets.size(), 2u);
-  EXPECT_EQ(from_file.table.pockets[1].centre.y(), -0.71);
-  EXPECT_EQ(from_file.ball_mass, 0.16);
+  EXPECT_EQ(from_table_file.motion.rolling_model, bsp::RollingModel::Pooltool);
+  EXPECT_EQ(from_table_file.ball_contact.friction_model, bsp::BallBallFriction::Constant);
+  ASSERT_EQ(from_table_file.table.pockets.size(), 2u);
+  EXPECT_EQ(from_table_file.table.pockets[1].centre.y(), -0.71);
+  EXPECT_EQ(from_table_file.ball_mass, 0.16);
 }
