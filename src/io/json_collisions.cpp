@@ -162,7 +162,9 @@ Expected<BallCollision> ballCollisionFromJson(const json& request)
   {
     if (request.contains("stiffness_ratio"))
       return invalidArgument("stiffness_ratio", "give it once: here or as ball_ball.cloth_stiffness_ratio");
-    if (Status status = readNumbers(fields, {{"cloth_stiffness_ratio", &collision.stiffness_ratio}}, "ball_ball");
+    if (Status status =
+            firstError({readNumbers(fields, {{"cloth_stiffness_ratio", &collision.stiffness_ratio}}, "ball_ball"),
+                        requireStiffnessRatio(collision.stiffness_ratio, "ball_ball.cloth_stiffness_ratio")});
         !status)
       return status.error();
   }

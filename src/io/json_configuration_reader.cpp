@@ -282,7 +282,15 @@ Expected<SurfaceContact> strikeCloth(const json& request, const ShotConfiguratio
     return configuration.table.cloth;
   if (!request.at("table_contact").is_object())
     return invalidArgument("table_contact", "must be an object");
+  // Its constants one by one over the table file's cloth, or over the default cloth (docs/cli.md, cue_strike).
   SurfaceContact cloth = ShotConfiguration{}.table.cloth;
+  if (request.contains("table_file"))
+  {
+    auto file = tableFile(request);
+    if (!file)
+      return file.error();
+    cloth = file.value().table.cloth;
+  }
   if (Status status = readSurfaceContact(request.at("table_contact"), "table_contact", cloth); !status)
     return status.error();
   return cloth;

@@ -40,7 +40,8 @@ Error inRequestLayout(Error error);
 /// refused, naming it. Values are read, not validated: each problem validates the part it uses.
 Expected<ShotConfiguration> requestConfiguration(const json& request);
 
-/// The strike's cloth: the request's "table_contact" over the defaults when it gives one, else the table's cloth.
+/// The strike's cloth: the request's "table_contact" over the table file's cloth (or the default cloth) when it
+/// gives one, else the table's cloth.
 Expected<SurfaceContact> strikeCloth(const json& request, const ShotConfiguration& configuration);
 
 }  // namespace json_io

@@ -16,6 +16,9 @@ namespace
 using nlohmann::json;
 using Solver = Expected<json> (*)(const json&, const SolverOptions&);
 
+/// Arrays and objects nested deeper than any problem's fields (a calibration's track points sit at depth 6).
+constexpr std::size_t MAX_REQUEST_DEPTH = 32;
+
 using json_io::ConfigurationPart;
 
 /// A problem: its solver, the top-level fields it reads besides "problem" and "solver" (docs/cli.md, Problems) and
@@ -71,6 +74,21 @@ const std::vector<Problem>& problems()
   return known;
 }
 
+/// A problem that strikes without moving the ball on (cue_strike) reads only the cloth of its "table".
+Status onlyTheClothOfAStrike(const Problem& problem, const std::string& key, const json& value)
+{
+  const auto reads = [&problem](ConfigurationPart part) {
+    return std::find(problem.configuration.begin(), problem.configuration.end(), part) != problem.configuration.end();
+  };
+  if (key != "table" || !value.is_object() || !reads(ConfigurationPart::Strike) || reads(ConfigurationPart::Motion))
+    return {};
+  for (const auto& item : value.items())
+    if (item.key() != "cloth")
+      return invalidArgument("table." + item.key(), "is not a field of the problem \"" + std::string(problem.name) +
+                                                        "\": a strike reads only the table's cloth");
+  return {};
+}
+
 /// A top-level field the problem does not read is refused: a misspelt or misplaced constant would otherwise be
 /// ignored and the answer computed without it.
 Status onlyFieldsOf(const Problem& problem, const json& request)
@@ -82,11 +100,36 @@ Status onlyFieldsOf(const Problem& problem, const json& request)
     const auto listed = [&key](const std::vector<std::string>& names)
     { return std::find(names.begin(), names.end(), key) != names.end(); };
     if (key == "problem" || key == "solver" || listed(problem.fields) || listed(configuration))
+    {
+      if (Status status = onlyTheClothOfAStrike(problem, key, item.value()); !status)
+        return status;
       continue;
+    }
     return invalidArgument(
         key, "is not a field of the problem \"" + std::string(problem.name) + "\" (docs/cli.md lists its fields)");
   }
   return {};
+}
+
+/// How deep arrays and objects nest in `value`, counted without recursion: a request nested a hundred thousand
+/// levels deep would overflow the stack of any recursive reader (copying a json value is one).
+std::size_t nestingDepth(const json& value)
+{
+  std::size_t deepest = 0;
+  std::vector<std::pair<const json*, std::size_t>> open{{&value, 1}};
+  while (!open.empty())
+  {
+    const auto [node, depth] = open.back();
+    open.pop_back();
+    if (!node->is_structured())
+      continue;
+    deepest = std::max(deepest, depth);
+    if (deepest > MAX_REQUEST_DEPTH)
+      return deepest;
+    for (const json& item : *node)
+      open.emplace_back(&item, depth + 1);
+  }
+  return deepest;
 }
 
 /// `path` extended by one step: a key of an object, or an index of an array.
@@ -147,6 +190,9 @@ Expected<json> solveJsonProblem(const json& request)
 {
   if (!request.is_object())
     return invalidArgument("", "the input must be a JSON object");
+  if (nestingDepth(request) > MAX_REQUEST_DEPTH)
+    return invalidArgument("", "nests deeper than " + std::to_string(MAX_REQUEST_DEPTH) +
+                                   " levels: no problem has such fields (docs/cli.md)");
   if (!request.contains("problem") || !request.at("problem").is_string())
     return invalidArgument("problem", "is required, one of: " + knownProblems());
   auto options = json_io::solverOptions(request);

@@ -2,11 +2,10 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <fstream>
 #include <optional>
-#include <sstream>
 
 #include "billiard_shot_planner/core/validation.hpp"
+#include "text_file.hpp"
 #include "yaml_configuration_reader.hpp"
 
 namespace billiard_shot_planner
@@ -53,12 +52,10 @@ Expected<ParameterFile> parseParameterFile(const std::string& text, const ShotCo
 
 Expected<ParameterFile> loadParameterFile(const std::string& path, const ShotConfiguration& base)
 {
-  std::ifstream file(path);
-  if (!file)
-    return invalidArgument("parameter_file", "cannot open " + path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return parseParameterFile(text.str(), base);
+  auto text = readTextFile(path, "parameter_file");
+  if (!text)
+    return text.error();
+  return parseParameterFile(text.value(), base);
 }
 
 ShotConfiguration withTableFile(ShotConfiguration configuration, const TableFile& file)

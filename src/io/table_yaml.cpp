@@ -3,12 +3,11 @@
 #include <yaml-cpp/yaml.h>
 
 #include <array>
-#include <fstream>
 #include <optional>
-#include <sstream>
 
 #include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/shot/configuration_fields.hpp"
+#include "text_file.hpp"
 #include "yaml_configuration_reader.hpp"
 
 namespace billiard_shot_planner
@@ -106,12 +105,10 @@ Expected<TableFile> parseTableFile(const std::string& text)
 
 Expected<TableFile> loadTableFile(const std::string& path)
 {
-  std::ifstream file(path);
-  if (!file)
-    return invalidArgument("table_file", "cannot open " + path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return parseTableFile(text.str());
+  auto text = readTextFile(path, "table_file");
+  if (!text)
+    return text.error();
+  return parseTableFile(text.value());
 }
 
 Expected<Table> parseTableYaml(const std::string& text)

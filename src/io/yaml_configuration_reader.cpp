@@ -133,9 +133,11 @@ YAML::Node YamlConfigurationReader::find(const std::string& place)
 
 Expected<std::string> keyOf(const YAML::Node& key, const std::string& place)
 {
-  if (!key.IsScalar() || key.Scalar().find('.') != std::string::npos)
-    return invalidArgument(place.empty() ? "table" : place,
-                           "has a key that is not a name (a list, a map or a dotted path)");
+  if (!key.IsScalar())
+    return invalidArgument(place.empty() ? "table" : place, "has a key that is a list or a map, not a name");
+  if (key.Scalar().find('.') != std::string::npos)
+    return invalidArgument(place.empty() ? key.Scalar() : place + "." + key.Scalar(),
+                           "is a dotted path, not a name: write each step as its own map");
   return key.Scalar();
 }
 

@@ -47,8 +47,8 @@ private:
   std::set<std::string> visited_;
 };
 
-/// A map's key as a name; a key that is a list or a map (YAML allows them), or that holds a '.' (it would read as a
-/// path), is refused, named by the map's place.
+/// A map's key as a name; a key that is a list or a map (YAML allows them) is refused naming the map's place ("table"
+/// at a table file's top level), one that holds a '.' (it would read as a path) naming itself.
 Expected<std::string> keyOf(const YAML::Node& key, const std::string& place);
 
 /// The first key under `node` (at `place`, a map; "" for the file's top level) that the reader did not look at: a

@@ -14,11 +14,22 @@ void registerErrors(py::module_& module)
   module.attr("Error") = error;
 }
 
+namespace
+{
+/// Text as a Python str whatever its bytes: a message may quote a file that is not UTF-8 (a YAML parser's error
+/// echoes the bytes it stopped at), and the error must still be an Error, not a UnicodeDecodeError.
+py::str text(const std::string& bytes)
+{
+  return py::reinterpret_steal<py::str>(
+      PyUnicode_DecodeUTF8(bytes.data(), static_cast<Py_ssize_t>(bytes.size()), "replace"));
+}
+}  // namespace
+
 py::object errorObject(const Error& error)
 {
-  py::object exception = py::module_::import("billiard_shot_planner._core").attr("Error")(error.describe());
+  py::object exception = py::module_::import("billiard_shot_planner._core").attr("Error")(text(error.describe()));
   exception.attr("code") = toString(error.code);
-  exception.attr("field") = error.field;
+  exception.attr("field") = text(error.field);
   return exception;
 }
 

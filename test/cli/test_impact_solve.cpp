@@ -502,13 +502,19 @@ TEST(ImpactSolve, AFieldTheProblemDoesNotReadIsRefused)
 // Inputs a review found mishandled: each is refused naming its field, or read as documented.
 TEST(ImpactSolve, ConfigurationInputsAtTheEdgesAreRefusedOrRead)
 {
-  // A law's type nested 100 000 deep: refused by its kind, not printed back (nor overflowing the stack).
-  std::string deep = R"({"problem": "cue_strike", "cue": {"phi_deg": 0, "speed": 2}, "cue_contact": {"law": {"type": )";
-  deep += std::string(100000, '[') + std::string(100000, ']') + "}}}";
-  const SolverRun nested = runSolver(deep);
-  EXPECT_EQ(nested.exit_code, 2) << nested.output.substr(0, 200);
-  EXPECT_NE(nested.output.find("invalid_argument: cue_contact.law.type: must be one of"), std::string::npos);
-  EXPECT_LT(nested.output.size(), 400u);
+  // Input nested 300 000 deep: refused before any reader copies it (a copy recurses once per level).
+  for (const auto& [place, closing] : {std::pair{R"("cue_contact": {"law": {"type": )", "}}}"},
+                                       std::pair{R"("table": {"cloth": {"law": {"x": )", "}}}}"}})
+  {
+    std::string deep = R"({"problem": "cue_strike", "cue": {"phi_deg": 0, "speed": 2}, )" + std::string(place);
+    deep += std::string(300000, '[') + std::string(300000, ']') + closing;
+    const SolverRun nested = runSolver(deep);
+    EXPECT_EQ(nested.exit_code, 2) << nested.output.substr(0, 200);
+    EXPECT_NE(nested.output.find("nests deeper than"), std::string::npos) << nested.output.substr(0, 200);
+    EXPECT_LT(nested.output.size(), 400u);
+  }
+  const std::string strike = R"({"problem": "cue_strike", "cue": {"phi_deg": 0, "speed": 2}, )";
+  const std::string snooker = R"("table_file": ")" + std::string(CONFIG_DIR) + R"(/tables/snooker_mathavan.yaml")";
 
   const std::string motion = R"({"problem": "ball_motion", "position": [0, 0], "v": [1, 0, 0], "omega": [0, 0, 0], )";
   const std::string drop = R"({"problem": "ball_table", "mass": 0.17, "radius": 0.0286, "velocity": [0, 0, -2], )";
@@ -522,6 +528,11 @@ TEST(ImpactSolve, ConfigurationInputsAtTheEdgesAreRefusedOrRead)
       {drop + R"("table": {"restitution": 0.9, "friction": 0, "eta2": 1, "law": {"yield_speed": 1}}})",
        "table.law.yield_speed"},  // under the constant law, as in every other problem
       {collision + R"("stiffness_ratio": 0.5, "ball_ball": {"cloth_stiffness_ratio": 0.5}})", "stiffness_ratio"},
+      {collision + R"("ball_ball": {"cloth_stiffness_ratio": -1}})", "ball_ball.cloth_stiffness_ratio"},
+      {strike + R"("cue_contact": {"law": {"type": [[1]]}}})", "cue_contact.law.type"},  // a type is a name
+      {strike + R"("table": {"length": -5}})", "table.length"},  // a strike reads only the table's cloth
+      {strike + R"("table_file": "/"})", "table_file"},          // a directory
+      {strike + R"("table_file": "/dev/zero"})", "table_file"},  // a device without end
   };
   for (const auto& c : cases)
   {
@@ -529,6 +540,13 @@ TEST(ImpactSolve, ConfigurationInputsAtTheEdgesAreRefusedOrRead)
     EXPECT_EQ(run.exit_code, 2) << c[0] << "\n" << run.output;
     EXPECT_NE(run.output.find("invalid_argument: " + c[1] + ":"), std::string::npos) << c[0] << "\n" << run.output;
   }
+  // table_contact's constants stand one by one over the table file's cloth (restitution 0.51625, friction 0.212).
+  const SolverRun over_file = runSolver(strike + snooker + R"(, "table_contact": {"eta2": 8}})");
+  const SolverRun spelt =
+      runSolver(strike + R"("table_contact": {"restitution": 0.51625, "friction": 0.212, "eta2": 8}})");
+  ASSERT_EQ(over_file.exit_code, 0) << over_file.output;
+  ASSERT_EQ(spelt.exit_code, 0) << spelt.output;
+  EXPECT_EQ(nlohmann::json::parse(over_file.output)["v"], nlohmann::json::parse(spelt.output)["v"]);
   // ball_ball's "cloth_stiffness_ratio" is the top-level "stiffness_ratio" given in the contact, as table files give
   // it.
   const SolverRun top = runSolver(collision + R"("stiffness_ratio": 0.5})");

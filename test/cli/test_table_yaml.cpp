@@ -91,7 +91,7 @@ TEST(TableYaml, AFileGivesItsBallsContactAndMotionAndRefusesUnknownFields)
       {"table: {}\nball_ball: {law: {type: elastic_plastic, yield_speed: -1}}", "ball_ball.law.yield_speed"},
       {"table:\n  ? [1, 2]\n  : 3", "table"},  // a key that is a list: YAML allows it, a table file does not
       {"table: {cloth: {? {a: 1} : 2}}", "table.cloth"},
-      {"table: {cloth: {}, cloth.friction: 0.5}", "table"},                              // a key is a name, not a path
+      {"table: {cloth: {}, cloth.friction: 0.5}", "table.cloth.friction"},               // a key is a name, not a path
       {"table: {cushion_height: 0.06}\nballs: {radius: 0.02}", "table.cushion_height"},  // above the balls named
   };
   for (const auto& [text, field] : bad)

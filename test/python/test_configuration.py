@@ -175,3 +175,12 @@ def test_a_missing_file_is_named(tmp_path):
     with pytest.raises(bsp.Error) as raised:
         bsp.Configuration.load(str(tmp_path / "absent.yaml"))
     assert raised.value.field == "parameter_file"
+
+
+def test_a_file_that_is_no_parameter_file_is_an_error_not_a_crash(tmp_path):
+    garbage = tmp_path / "garbage.yaml"
+    garbage.write_bytes(b"\xff\xfe[\x80\x81: {\n\x00\xc3")  # neither UTF-8 nor YAML: the message quotes its bytes
+    for path in (str(garbage), str(tmp_path), "/dev/zero"):  # and a directory, and a device without end
+        with pytest.raises(bsp.Error) as raised:
+            bsp.Configuration.load(path)
+        assert raised.value.field == "parameter_file", path
