@@ -101,16 +101,16 @@ void ContactDynamics::springForces(const double* y, const SlipDirections& direct
   {
     const ContactState& contact = contacts_[i];
     const int row = space_.offset[i];
-    f[row] = contact.compliant() ? contact.normalForce(s[row]) : 0.0;
+    f[row] = contact.compliant() ? contact.normal.force(s[row]) : 0.0;
     if (space_.dim[i] != 3)
       continue;
     Eigen::Map<Eigen::Vector2d> tangential(f + row + 1);
-    if (contact.active() && !contact.slipping)
-      tangential = -contact.kappa * Eigen::Vector2d(s[row + 1], s[row + 2]);
+    if (contact.active() && !contact.tangential.slipping)
+      tangential = contact.tangential.force(s[row + 1], s[row + 2]);
     else if (contact.active() && contact.compliant())
       // Sliding: friction on the cone, −μ F_n ŝ. Equal to −κ s_t on the exact solution, but bounded by the cone
       // even where the spring shrinks to nothing at separation and its integrated length loses accuracy.
-      tangential = -contact.friction * f[row] * directions[i];
+      tangential = -contact.tangential.friction * f[row] * directions[i];
     else
       tangential.setZero();  // inactive, or a sliding rigid link (its friction comes with its force, addLinkForces)
   }
@@ -236,7 +236,7 @@ void ContactDynamics::firstOrderLags(const double* y, const Eigen::VectorXd& w, 
     // no stiffness to bound. The floor can be orders of magnitude above a lightly loaded cone (a rolling ball's cloth
     // contact under a cushion hit), and a slowly turning slip would then lag by up to 90° and stick and slip again
     // without end.
-    lags[i].relaxation = contacts_[i].coneLength(force(row)) / speed;
+    lags[i].relaxation = contacts_[i].tangential.coneLength(force(row)) / speed;
     lags[i].angle = std::asin(std::clamp(lags[i].relaxation * turn_rate, -1.0, 1.0));
   }
 }
@@ -301,7 +301,7 @@ double ContactDynamics::relaxationRatio(std::size_t contact, const Eigen::Vector
 {
   const int row = space_.offset[contact];
   const double speed = std::hypot(w(row + 1), w(row + 2), VELOCITY_TOLERANCE);
-  return contacts_[contact].coneLength(force(row)) / (quasi_steady_relaxation_ * speed);
+  return contacts_[contact].tangential.coneLength(force(row)) / (quasi_steady_relaxation_ * speed);
 }
 
 double ContactDynamics::linkCoupling(std::size_t link, std::size_t by, const SlipDirections& directions) const
@@ -311,8 +311,8 @@ double ContactDynamics::linkCoupling(std::size_t link, std::size_t by, const Sli
   const int row = space_.offset[i];
   const auto w = link_rows_.row(static_cast<Eigen::Index>(link));
   double coupling = w(row);
-  if (contacts_[i].slipping)
-    coupling -= contacts_[i].friction * (w(row + 1) * directions[i].x() + w(row + 2) * directions[i].y());
+  if (contacts_[i].tangential.slipping)
+    coupling -= contacts_[i].tangential.friction * (w(row + 1) * directions[i].x() + w(row + 2) * directions[i].y());
   return coupling;
 }
 
@@ -344,8 +344,8 @@ void ContactDynamics::addLinkForces(const SlipDirections& directions, Eigen::Vec
     const std::size_t i = rigid_contacts_[r];
     const int row = space_.offset[i];
     force(row) += link_forces(r);
-    if (contacts_[i].slipping)
-      force.segment<2>(row + 1) -= contacts_[i].friction * link_forces(r) * directions[i];
+    if (contacts_[i].tangential.slipping)
+      force.segment<2>(row + 1) -= contacts_[i].tangential.friction * link_forces(r) * directions[i];
   }
 }
 
@@ -364,7 +364,7 @@ Eigen::Vector2d ContactDynamics::acrossSlip(std::size_t contact, const Eigen::Ve
   return v_t - direction * direction.dot(v_t);
 }
 
-double ContactDynamics::linkForceRate(std::size_t contact, const ForceEvaluation& at) const
+double ContactDynamics::linkForceRate(std::size_t contact, const double* y, const ForceEvaluation& at) const
 {
   const Eigen::VectorXd& w = at.velocity;
   const Eigen::VectorXd& force = at.force;
@@ -380,16 +380,16 @@ double ContactDynamics::linkForceRate(std::size_t contact, const ForceEvaluation
     if (!state.active())
       continue;
     if (state.compliant())
-      rate(row) = state.normalForceRate(w(row));
+      rate(row) = state.normal.forceRate(y[space_.size + row], w(row));
     if (space_.dim[i] != 3)
       continue;
-    if (!state.slipping)
-      rate.segment<2>(row + 1) = -state.kappa * w.segment<2>(row + 1);
+    if (!state.tangential.slipping)
+      rate.segment<2>(row + 1) = state.tangential.forceRate(w.segment<2>(row + 1));
     else if (state.compliant())
-      rate.segment<2>(row + 1) =
-          -state.friction * (rate(row) * directions[i] + force(row) * directionRate(i, directions[i], w, force));
+      rate.segment<2>(row + 1) = -state.tangential.friction *
+                                 (rate(row) * directions[i] + force(row) * directionRate(i, directions[i], w, force));
     else
-      rate.segment<2>(row + 1) = -state.friction * force(row) * directionRate(i, directions[i], w, force);
+      rate.segment<2>(row + 1) = -state.tangential.friction * force(row) * directionRate(i, directions[i], w, force);
   }
   const Eigen::VectorXd rates = solveLinks(directions, rate);
   for (Eigen::Index r = 0; r < rates.size(); ++r)
@@ -402,14 +402,14 @@ double ContactDynamics::strainEnergy(std::size_t contact, const double* y, Force
 {
   const ContactState& state = contacts_[contact];
   const double* s = y + space_.size + space_.offset[contact];
-  const double normal = state.compliant() ? state.normalEnergy(s[0]) : 0.0;
+  const double normal = state.compliant() ? state.normal.energy(s[0]) : 0.0;
   if (space_.dim[contact] != 3 || !state.active())
     return normal;
-  if (!state.slipping)
-    return normal + 0.5 * state.kappa * (s[1] * s[1] + s[2] * s[2]);
+  if (!state.tangential.slipping)
+    return normal + state.tangential.energy(s[1], s[2]);
   // On the cone (the spring state only carries the direction): E_t = ½κρ², ρ = μF_n/κ, with F_n the spring's force
   // (then E_t = μ²η²E_n) or a rigid link's constraint force, read from the forces.
-  double normal_force = state.normalForce(s[0]);
+  double normal_force = state.normal.force(s[0]);
   if (!state.compliant())
   {
     forces(y, scratch.force, scratch.directions, scratch.lag);
@@ -417,8 +417,8 @@ double ContactDynamics::strainEnergy(std::size_t contact, const double* y, Force
   }
   // A link that pulls is released at the instant it is made, and has no cone meanwhile (squared, its force would
   // read as strain energy that no spring holds).
-  const double cone = state.coneLength(std::max(normal_force, 0.0));
-  return normal + 0.5 * state.kappa * cone * cone;
+  const double cone = state.tangential.coneLength(std::max(normal_force, 0.0));
+  return normal + state.tangential.coneEnergy(cone);
 }
 
 Eigen::Vector2d ContactDynamics::slipDirection(std::size_t contact, const double* y, ForceEvaluation& scratch) const
@@ -446,20 +446,20 @@ Eigen::Vector2d ContactDynamics::carrierDirection(std::size_t contact, const dou
   const double length = tangential.norm();
   // Below this the direction is round-off; the slip direction chosen at the transition is the right one.
   const double relaxed = 1e-14 * (1.0 + std::abs(s[0]));
-  return length > relaxed ? Eigen::Vector2d(tangential / length) : contacts_[contact].slip_direction;
+  return length > relaxed ? Eigen::Vector2d(tangential / length) : contacts_[contact].tangential.slip_direction;
 }
 
-double ContactDynamics::slidingSpeed(std::size_t contact, const ForceEvaluation& at) const
+double ContactDynamics::slidingSpeed(std::size_t contact, const double* y, const ForceEvaluation& at) const
 {
   const ContactState& state = contacts_[contact];
   const int row = space_.offset[contact];
   const double along = at.directions[contact].dot(at.velocity.segment<2>(row + 1));
   if (state.phase != NormalPhase::RigidLink)
-    return along + state.coneRate(at.velocity(row));
+    return along + state.coneRate(at.velocity(row), y[space_.size + row]);
   // A rigid link has v_n = 0, but its spring on the friction cone, ρ = μf/κ, still grows and shrinks with its
   // force: σ = ŝ·v_t − ρ̇, the limit of the compliant contact's μη²v_n = −μḞ_n/κ. Without ρ̇ the link would slide
   // on while the cone outgrows the slip, and stick again with spring energy that nothing paid for.
-  return along - state.friction * linkForceRate(contact, at) / state.kappa;
+  return along - state.tangential.friction * linkForceRate(contact, y, at) / state.tangential.kappa;
 }
 
 void ContactDynamics::springRates(std::size_t contact, const double* y, const Eigen::VectorXd& w, double cone_length,
@@ -475,7 +475,7 @@ void ContactDynamics::springRates(std::size_t contact, const double* y, const Ei
   if (!state.active())
     return;
   // docs/impact_model.md, "Coulomb friction and tangential compliance".
-  if (!state.slipping)
+  if (!state.tangential.slipping)
   {
     rates[1] = w(row + 1);  // stick: the contact particle is at rest on B
     rates[2] = w(row + 2);
@@ -496,7 +496,7 @@ void ContactDynamics::springRates(std::size_t contact, const double* y, const Ei
 
 double ContactDynamics::coneLength(std::size_t contact, const Eigen::VectorXd& force) const
 {
-  const double rho = contacts_[contact].coneLength(force(space_.offset[contact]));
+  const double rho = contacts_[contact].tangential.coneLength(force(space_.offset[contact]));
   return std::sqrt(rho * rho + SLIP_LENGTH_FLOOR * SLIP_LENGTH_FLOOR);  // ρ is of order one: no overflow to guard
 }
 
@@ -519,7 +519,7 @@ double ContactDynamics::rates(const double* y, double* dydt, ForceEvaluation& at
       // of compression) so that the clock stays smooth across that event too.
       const double v_n = at.velocity(space_.offset[i]);
       const double separation_speed = std::sqrt(v_n * v_n + CLOCK_SPEED_FLOOR * CLOCK_SPEED_FLOOR);
-      shrink_rate += contact.coneRate(separation_speed) / cone_length;
+      shrink_rate += contact.coneRate(separation_speed, y[space_.size + space_.offset[i]]) / cone_length;
     }
   }
   return shrink_rate;

@@ -78,10 +78,10 @@ public:
   /// rigid link, whose cone is set by its constraint force.
   double strainEnergy(std::size_t contact, const double* y, ForceEvaluation& scratch) const;
   /// Sliding speed σ = ŝ·v_t + μη²v_n of a slipping contact's particle (docs/impact_model.md, "Coulomb friction and
-  /// tangential compliance"); for a rigid link, whose v_n = 0, σ = ŝ·v_t − μḟ/κ. `at`: the evaluation at the state.
-  double slidingSpeed(std::size_t contact, const ForceEvaluation& at) const;
-  /// Rate ḟ of a rigid link's normal force, from the evaluation at the same instant.
-  double linkForceRate(std::size_t contact, const ForceEvaluation& at) const;
+  /// tangential compliance"); for a rigid link, whose v_n = 0, σ = ŝ·v_t − μḟ/κ. `at`: the evaluation at the state y.
+  double slidingSpeed(std::size_t contact, const double* y, const ForceEvaluation& at) const;
+  /// Rate ḟ of a rigid link's normal force at the state y, from the evaluation `at` there.
+  double linkForceRate(std::size_t contact, const double* y, const ForceEvaluation& at) const;
   /// Slip direction ŝ of a sliding contact at y: its carrier's, or the quasi-steady one (evaluated into `scratch`)
   /// while it follows the slip.
   Eigen::Vector2d slipDirection(std::size_t contact, const double* y, ForceEvaluation& scratch) const;

@@ -73,13 +73,13 @@ void LinearPhaseStepper::readForceMap(const ContactSpace& space, const std::vect
     if (contact.compliant())
     {
       moving_rows_.push_back(row);
-      stiffness_.push_back(contact.stiffness);
+      stiffness_.push_back(contact.normal.stiffness);
     }
-    if (space.dim[i] == 3 && !contact.slipping)  // a sliding spring only carries its (fixed) direction
+    if (space.dim[i] == 3 && !contact.tangential.slipping)  // a sliding spring only carries its (fixed) direction
       for (int k = 1; k <= 2; ++k)
       {
         moving_rows_.push_back(row + k);
-        stiffness_.push_back(contact.kappa);
+        stiffness_.push_back(contact.tangential.kappa);
       }
   }
   // The forces (rigid-link forces and sliding friction included) are linear in the moving springs: F = G s_R. G is
@@ -123,6 +123,10 @@ bool LinearPhaseStepper::build(const ContactSpace& space, const std::vector<Cont
   t0_ = t_ = t0;
   dynamics_ = &dynamics;
   space_ = &space;
+  // The closed form is that of linear springs: a phase with a spring of another law is integrated.
+  if (std::any_of(contacts.begin(), contacts.end(),
+                  [](const ContactState& contact) { return contact.compliant() && !contact.normal.linear; }))
+    return false;
   readForceMap(space, contacts, dynamics);
   delassus_times_g_.noalias() = space.delassus * force_from_s_;
   dynamics.relativeVelocity(y0.data(), start_velocity_);

@@ -30,10 +30,11 @@ namespace detail
 class LinearPhaseStepper
 {
 public:
-  /// Builds the closed form of the state from y0 at t0; false when the state's dynamics is not linear (a sliding
-  /// direction would turn) or not symmetric. Steps span `radians_per_step` of the fastest mode's phase.
-  /// `dynamics` must describe the same discrete state as `contacts` (refreshed after the last transition), in which
-  /// no slip direction follows its slip (ContactState::quasi_steady): the closed form holds the directions fixed.
+  /// Builds the closed form of the state from y0 at t0; false when the state's dynamics is not linear (a loaded
+  /// spring whose law is not linear, a sliding direction that would turn) or not symmetric. Steps span
+  /// `radians_per_step` of the fastest mode's phase. `dynamics` must describe the same discrete state as `contacts`
+  /// (refreshed after the last transition), in which no slip direction follows its slip
+  /// (TangentialSpring::quasi_steady): the closed form holds the directions fixed.
   bool build(const ContactSpace& space, const std::vector<ContactState>& contacts, const ContactDynamics& dynamics,
              const OdeState& y0, double t0, double radians_per_step);
 

@@ -188,7 +188,7 @@ private:
       evaluateKinematics(dynamics_, y_.data(), event_kinematics_);
       std::optional<Guard> guard;
       if (std::any_of(contacts_.begin(), contacts_.end(),
-                      [](const ContactState& c) { return c.phase == NormalPhase::RigidLink && c.slipping; }))
+                      [](const ContactState& c) { return c.phase == NormalPhase::RigidLink && c.tangential.slipping; }))
         guard = jammedLink(dynamics_, event_kinematics_, contacts_, space_, settled_);
       if (!guard)
         guard = immediateTransition(event_kinematics_, contacts_, space_, settled_);
@@ -204,7 +204,8 @@ private:
     return {};
   }
 
-  /// Angular frequency bound of the active springs: the largest eigenvalue of W K is at most its trace.
+  /// Angular frequency bound of the active springs: the largest eigenvalue of W K is at most its trace, K the springs'
+  /// tangent stiffnesses at the present deformations.
   double fastestFrequency() const
   {
     double trace = 0.0;
@@ -214,9 +215,10 @@ private:
         continue;
       const int row = space_.offset[i];
       if (contacts_[i].compliant())
-        trace += space_.delassus(row, row) * contacts_[i].stiffness;
+        trace += space_.delassus(row, row) * contacts_[i].normal.stiffnessAt(y_.data()[space_.size + row]);
       if (space_.dim[i] == 3)
-        trace += (space_.delassus(row + 1, row + 1) + space_.delassus(row + 2, row + 2)) * contacts_[i].kappa;
+        trace +=
+            (space_.delassus(row + 1, row + 1) + space_.delassus(row + 2, row + 2)) * contacts_[i].tangential.kappa;
     }
     return std::sqrt(std::max(trace, std::numeric_limits<double>::min()));
   }

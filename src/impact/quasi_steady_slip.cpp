@@ -35,7 +35,7 @@ double QuasiSteadySlip::relaxationLimit(const SolverOptions& options)
 void QuasiSteadySlip::release(std::size_t contact, OdeState& y)
 {
   const Eigen::Vector2d direction = dynamics_.slipDirection(contact, y.data(), scratch_);
-  contacts_[contact].quasi_steady = false;
+  contacts_[contact].tangential.quasi_steady = false;
   double* carrier = y.data() + space_.size + space_.offset[contact] + 1;
   carrier[0] = direction.x();
   carrier[1] = direction.y();
@@ -66,7 +66,7 @@ void QuasiSteadySlip::followReleasedAgain()
   if (released_.empty())
     return;
   for (std::size_t i : released_)
-    contacts_[i].quasi_steady = true;
+    contacts_[i].tangential.quasi_steady = true;
   dynamics_.refresh();
 }
 
@@ -104,7 +104,7 @@ void QuasiSteadySlip::followShortSlips(const OdeState& y)
   for (std::size_t i = 0; i < contacts_.size(); ++i)
     if (hasRelaxedOntoItsSlip(i, kinematics_, scratch_))
     {
-      contacts_[i].quasi_steady = true;
+      contacts_[i].tangential.quasi_steady = true;
       dynamics_.refresh();
     }
 }
@@ -120,7 +120,8 @@ bool QuasiSteadySlip::hasRelaxedOntoItsSlip(std::size_t i, const Kinematics& at,
 bool QuasiSteadySlip::relaxesFast(std::size_t i, const Kinematics& at) const
 {
   const ContactState& contact = contacts_[i];
-  return contact.sliding() && !contact.quasi_steady && dynamics_.relaxationRatio(i, at.velocity, at.force) < 1.0;
+  return contact.sliding() && !contact.tangential.quasi_steady &&
+         dynamics_.relaxationRatio(i, at.velocity, at.force) < 1.0;
 }
 
 /// A sliding contact on its way to separation has a cone that shrinks fast against its slip where ρ̇ = μη²v_n is
@@ -132,7 +133,8 @@ bool QuasiSteadySlip::shrinksToSeparation(std::size_t i, const Kinematics& at) c
   if (!contact.slidingInRestitution())
     return false;
   const int row = space_.offset[i];
-  return contact.coneRate(std::abs(at.velocity(row))) > SEPARATION_RATE_FOLLOW * at.velocity.segment<2>(row + 1).norm();
+  return contact.coneRate(std::abs(at.velocity(row)), at.y[space_.size + row]) >
+         SEPARATION_RATE_FOLLOW * at.velocity.segment<2>(row + 1).norm();
 }
 
 bool QuasiSteadySlip::anIntegratedSlipRelaxesFast(const Kinematics& at) const

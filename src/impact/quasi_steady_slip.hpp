@@ -13,7 +13,7 @@ namespace billiard_shot_planner
 {
 namespace detail
 {
-/// Which sliding contacts have their slip direction follow the slip quasi-steadily (ContactState::quasi_steady)
+/// Which sliding contacts have their slip direction follow the slip quasi-steadily (TangentialSpring::quasi_steady)
 /// instead of integrating it, and the switches between the two (SolverOptions::quasi_steady_slip; docs/engine.md,
 /// "Quasi-steady slip").
 ///

@@ -35,28 +35,28 @@ void relaxSprings(double* y, const ContactSpace& space, std::size_t contact)
 void chooseInitialMode(ContactState& contact, const Eigen::VectorXd& velocity, const ContactSpace& space,
                        std::size_t index)
 {
-  contact.slipping = false;
+  contact.tangential.slipping = false;
   if (space.dim[index] != 3)
     return;
   const int row = space.offset[index];
   const Eigen::Vector2d v_t(velocity(row + 1), velocity(row + 2));
   const double v_n = velocity(row);
-  if (v_t.norm() > contact.coneRate(std::abs(v_n)) + VELOCITY_TOLERANCE)
+  if (v_t.norm() > contact.coneRate(std::abs(v_n), /*deformation: relaxed=*/0.0) + VELOCITY_TOLERANCE)
   {
-    contact.slipping = true;
-    contact.slip_direction = v_t.normalized();
+    contact.tangential.slipping = true;
+    contact.tangential.slip_direction = v_t.normalized();
   }
 }
 
 /// Puts a contact into slip along `direction`. Its tangential spring state becomes the unit carrier of the slip
 /// direction (see ContactDynamics::springRates). A slip from relaxed springs starts by following the slip
-/// (ContactState::quasi_steady); one from a loaded spring (stick to slip) is integrated from the start.
+/// (TangentialSpring::quasi_steady); one from a loaded spring (stick to slip) is integrated from the start.
 void startSlip(ContactState& contact, const Eigen::Vector2d& direction, double* y, const ContactSpace& space,
                std::size_t index, bool from_relaxed_springs)
 {
-  contact.slipping = true;
-  contact.quasi_steady = from_relaxed_springs;
-  contact.slip_direction = direction;
+  contact.tangential.slipping = true;
+  contact.tangential.quasi_steady = from_relaxed_springs;
+  contact.tangential.slip_direction = direction;
   double* s = springs(y, space, index);
   s[1] = direction.x();
   s[2] = direction.y();
@@ -73,7 +73,7 @@ constexpr double REACTIVATION_ROUND_OFFS = 4.0;
 void stopTouching(std::size_t index, double* y, ContactState& contact, const ContactSpace& space)
 {
   contact.phase = NormalPhase::Inactive;
-  contact.slipping = false;
+  contact.tangential.slipping = false;
   contact.jammed = false;
   relaxSprings(y, space, index);
   contact.reactivation_speed =
@@ -117,20 +117,22 @@ void makeRigidLink(std::size_t index, const Kinematics& kinematics, double* y, s
 }
 
 /// The energy-equivalent approach speed of a compression that ends with normal deformation s_n (m/s): the speed
-/// at which the contact, alone, would have stored the energy ½ k s_n² it holds, v* = V √(2 E_n W̃_nn) = V |s_n|
-/// √(k W̃_nn). For one contact that is its approach speed exactly; in a multiple impact, the part of the impact's
-/// energy that this contact's spring took (docs/impact_model.md, "Restitution that depends on the impact").
+/// at which the contact, alone, would have stored the energy E_n it holds, v* = V √(2 E_n W̃_nn), for a linear spring
+/// V |s_n| √(k W̃_nn). For one contact that is its approach speed exactly; in a multiple impact, the part of the
+/// impact's energy that this contact's spring took (docs/impact_model.md, "Restitution that depends on the impact").
 double compressionSpeed(std::size_t index, double deformation, const ContactState& contact, const ContactSpace& space)
 {
   const int row = space.offset[index];
-  return space.velocity_scale * std::abs(deformation) * std::sqrt(contact.stiffness * space.delassus(row, row));
+  if (!contact.normal.linear)
+    return space.velocity_scale * std::sqrt(2.0 * contact.normal.energy(deformation) * space.delassus(row, row));
+  return space.velocity_scale * std::abs(deformation) * std::sqrt(contact.normal.stiffness * space.delassus(row, row));
 }
 
 bool isChattering(const ContactState& contact, double deformation, const ChatterLimit& chatter)
 {
-  if (contact.restitution == 0.0)
+  if (contact.normal.restitution == 0.0)
     return true;
-  const double stored_energy = contact.normalEnergy(deformation);
+  const double stored_energy = contact.normal.energy(deformation);
   const bool repeated = contact.ends_of_compression >= 3;
   const bool negligible = repeated && stored_energy <= chatter.energy;
   const bool unresolved = repeated && std::abs(deformation) <= chatter.deformation;
@@ -139,8 +141,9 @@ bool isChattering(const ContactState& contact, double deformation, const Chatter
   // restitute at 1e21 k̄ or more after an end of compression and, reactivated at once, press with a deformation
   // whose end no method finds, stepping at its period to the step bound; a restitution that stiff can also make the
   // energy rise.
-  const double restitution_stiffness = contact.stiffness / (contact.restitution * contact.restitution);
-  return negligible || unresolved || restitution_stiffness / contact.original_stiffness >= chatter.stiffness_growth;
+  const double restitution_stiffness = contact.normal.restitutionStiffness();
+  return negligible || unresolved ||
+         restitution_stiffness / contact.normal.original_stiffness >= chatter.stiffness_growth;
 }
 
 TransitionEvents endCompression(std::size_t index, const Kinematics& kinematics, double* y,
@@ -156,20 +159,18 @@ TransitionEvents endCompression(std::size_t index, const Kinematics& kinematics,
     return {ContactEventType::Separation};
   }
   ++contact.ends_of_compression;
-  contact.restituteAt(compressionSpeed(index, s[0], contact, space));
+  contact.normal.restituteAt(compressionSpeed(index, s[0], contact, space));
   if (isChattering(contact, s[0], chatter))
   {
     // Limit of infinite stiffness: the remaining normal strain energy (negligible, or lost when e = 0) is dropped.
     contact.rigid = true;
-    contact.chattered = contact.restitution > 0.0;
+    contact.chattered = contact.normal.restitution > 0.0;
     s[0] = 0.0;
     makeRigidLink(index, kinematics, y, contacts, space);
     return {ContactEventType::EndOfCompression, ContactEventType::RigidLink};
   }
-  // Paper §3.3 (i): k ← k/e², E ← e²E, so s_n ← e² s_n and the force stays continuous.
-  const double e2 = contact.restitution * contact.restitution;
-  contact.stiffness /= e2;
-  s[0] *= e2;
+  // Paper §3.3 (i): E ← e²E at a continuous force (for the linear spring k ← k/e², s_n ← e² s_n).
+  s[0] = contact.normal.endCompression(s[0]);
   contact.phase = NormalPhase::Restitution;
   return {ContactEventType::EndOfCompression};
 }
@@ -181,12 +182,12 @@ TransitionEvents activate(std::size_t index, const Kinematics& kinematics, doubl
   relaxSprings(y, space, index);
   const double approach = kinematics.velocity(space.offset[index]);
   if (contact.rigid)
-    contact.restituteAt(std::abs(approach) * space.velocity_scale);
-  if (contact.rigid && -contact.restitution * approach > contact.reactivation_speed)
+    contact.normal.restituteAt(std::abs(approach) * space.velocity_scale);
+  if (contact.rigid && -contact.normal.restitution * approach > contact.reactivation_speed)
   {
     // A contact of infinite stiffness (a former chattering one) approached at a finite speed: an instantaneous
     // impact of that contact alone, v_n ← −e v_n, and it separates at once.
-    rigidImpulse(index, -(1.0 + contact.restitution) * approach, y, contacts, space);
+    rigidImpulse(index, -(1.0 + contact.normal.restitution) * approach, y, contacts, space);
     stopTouching(index, y, contact, space);
     return {ContactEventType::Reactivation, ContactEventType::Separation};
   }
@@ -199,13 +200,13 @@ TransitionEvents activate(std::size_t index, const Kinematics& kinematics, doubl
     // the spring reaches the cone, μf/κ. Sliding at once, it would stand on a cone of that length, whose energy
     // ½(μf)²/κ nothing had paid for.
     makeRigidLink(index, kinematics, y, contacts, space);
-    contact.slipping = false;
+    contact.tangential.slipping = false;
     return {ContactEventType::Reactivation};
   }
   contact.phase = NormalPhase::Compression;
   chooseInitialMode(contact, kinematics.velocity, space, index);
-  if (contact.slipping)
-    startSlip(contact, contact.slip_direction, y, space, index, /*from_relaxed_springs=*/true);
+  if (contact.tangential.slipping)
+    startSlip(contact, contact.tangential.slip_direction, y, space, index, /*from_relaxed_springs=*/true);
   return {ContactEventType::Reactivation};
 }
 
@@ -262,8 +263,9 @@ const std::vector<Guard>& armedGuards(const std::vector<ContactState>& contacts,
         guards.push_back({i, ContactEventType::LinkRelease});
         break;
     }
-    if (space.dim[i] == 3 && (contacts[i].slipping || !contacts[i].jammed))
-      guards.push_back({i, contacts[i].slipping ? ContactEventType::SlipToStick : ContactEventType::StickToSlip});
+    if (space.dim[i] == 3 && (contacts[i].tangential.slipping || !contacts[i].jammed))
+      guards.push_back(
+          {i, contacts[i].tangential.slipping ? ContactEventType::SlipToStick : ContactEventType::StickToSlip});
     if (contacts[i].followsSlip())
       guards.push_back({i, ContactEventType::StickToSlip, /*releases_direction=*/true});
   }
@@ -311,9 +313,10 @@ double guardValue(const Guard& guard, const Kinematics& kinematics, const std::v
   // Stick to slip: |F_t| − μ F_n, i.e. E_t − μ²η²E_n in force form (docs/impact_model.md, Coulomb friction and
   // tangential compliance).
   if (guard.type == ContactEventType::StickToSlip)
-    return std::hypot(kinematics.force(row + 1), kinematics.force(row + 2)) - contact.friction * kinematics.force(row);
+    return std::hypot(kinematics.force(row + 1), kinematics.force(row + 2)) -
+           contact.tangential.friction * kinematics.force(row);
   if (guard.type == ContactEventType::SlipToStick)
-    return -dynamics.slidingSpeed(guard.contact, kinematics);
+    return -dynamics.slidingSpeed(guard.contact, kinematics.y, kinematics);
   return -1.0;  // a rigid link is made by an end of compression, never by a guard of its own
 }
 
@@ -346,8 +349,8 @@ TransitionEvents applyTransition(const Guard& guard, const Kinematics& kinematic
         // slips from relaxed springs, along its slip velocity. Integrated from a noise direction, the friction could
         // push along the slip, and the result would depend on the tolerance.
         const Eigen::Vector2d slip(kinematics.velocity(row + 1), kinematics.velocity(row + 2));
-        startSlip(contact, slip.norm() > 0.0 ? Eigen::Vector2d(slip.normalized()) : contact.slip_direction, y, space,
-                  guard.contact, /*from_relaxed_springs=*/true);
+        startSlip(contact, slip.norm() > 0.0 ? Eigen::Vector2d(slip.normalized()) : contact.tangential.slip_direction,
+                  y, space, guard.contact, /*from_relaxed_springs=*/true);
         break;
       }
       // The spring points against its force.
@@ -355,7 +358,7 @@ TransitionEvents applyTransition(const Guard& guard, const Kinematics& kinematic
       break;
     }
     case ContactEventType::SlipToStick:
-      contact.slipping = false;
+      contact.tangential.slipping = false;
       {
         // While sliding the friction came from the normal force; from now on the spring holds that force. A link
         // that jams while it pulls (jammedLink) held none: −μfŝ with f < 0 is no friction, and as a spring it would
@@ -363,8 +366,8 @@ TransitionEvents applyTransition(const Guard& guard, const Kinematics& kinematic
         double* spring = springs(y, space, guard.contact);
         const int row = space.offset[guard.contact];
         const bool holds = kinematics.force(row) > 0.0;
-        spring[1] = holds ? -kinematics.force(row + 1) / contact.kappa : 0.0;
-        spring[2] = holds ? -kinematics.force(row + 2) / contact.kappa : 0.0;
+        spring[1] = holds ? -kinematics.force(row + 1) / contact.tangential.kappa : 0.0;
+        spring[2] = holds ? -kinematics.force(row + 2) / contact.tangential.kappa : 0.0;
       }
       break;
     case ContactEventType::RigidLink:
@@ -392,7 +395,7 @@ bool nothingCanLoad(const Kinematics& kinematics, const std::vector<ContactState
     const double approach = contacts[i].active() ? RELEASE_VELOCITY : contacts[i].reactivation_speed;
     if (kinematics.velocity(row) < -approach)
       return false;
-    const bool sticking = contacts[i].active() && space.dim[i] == 3 && !contacts[i].slipping;
+    const bool sticking = contacts[i].active() && space.dim[i] == 3 && !contacts[i].tangential.slipping;
     if (sticking && kinematics.velocity.segment<2>(row + 1).norm() > VELOCITY_TOLERANCE)
       return false;
   }
@@ -454,10 +457,10 @@ std::optional<Guard> jammedLink(ContactDynamics& dynamics, const Kinematics& kin
   for (std::size_t i = 0; i < contacts.size(); ++i)
   {
     ContactState& contact = contacts[i];
-    if (settled[i] || contact.phase != NormalPhase::RigidLink || !contact.slipping)
+    if (settled[i] || contact.phase != NormalPhase::RigidLink || !contact.tangential.slipping)
       continue;
     const int row = space.offset[i];
-    bool jams = dynamics.slidingSpeed(i, kinematics) < -VELOCITY_TOLERANCE;
+    bool jams = dynamics.slidingSpeed(i, kinematics.y, kinematics) < -VELOCITY_TOLERANCE;
     if (!jams && kinematics.force(row) <= FORCE_TOLERANCE)
     {
       // Released, would it approach? Its grazing acceleration with the contact inactive (as a released one is
@@ -500,10 +503,10 @@ bool isPressed(std::size_t index, const Eigen::VectorXd& jerk, const Eigen::Vect
     if (!contacts[i].compliant())
       continue;
     const int row = space.offset[i];
-    stiffness(row) = contacts[i].stiffness;
+    stiffness(row) = contacts[i].normal.stiffness;
     const bool resting = std::abs(w(row)) <= VELOCITY_TOLERANCE;
-    if (space.dim[i] == 3 && !contacts[i].slipping && !resting)
-      stiffness.segment<2>(row + 1).setConstant(contacts[i].kappa);
+    if (space.dim[i] == 3 && !contacts[i].tangential.slipping && !resting)
+      stiffness.segment<2>(row + 1).setConstant(contacts[i].tangential.kappa);
   }
   const int row = space.offset[index];
   Eigen::VectorXd derivative = jerk;
@@ -547,9 +550,10 @@ void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vecto
     const int row = space.offset[i];
     const double* spring_rate = rates.data() + space.size + row;
     if (contacts[i].compliant())
-      force_rate(row) = contacts[i].normalForceRate(spring_rate[0]);
+      force_rate(row) = contacts[i].normal.forceRate(y.data()[space.size + row], spring_rate[0]);
     if (contacts[i].compliant() && space.dim[i] == 3)
-      force_rate.segment<2>(row + 1) = -contacts[i].kappa * Eigen::Vector2d(spring_rate[1], spring_rate[2]);
+      force_rate.segment<2>(row + 1) =
+          contacts[i].tangential.forceRate(Eigen::Vector2d(spring_rate[1], spring_rate[2]));
   }
   const Eigen::VectorXd jerk = space.delassus * force_rate;
   releaseUnpressedRestingContacts(jerk, w, contacts, space);
@@ -559,16 +563,16 @@ void chooseRestingModes(const ContactDynamics& dynamics, OdeState& y, std::vecto
     if (!contacts[i].compliant() || space.dim[i] != 3 || w.segment<3>(row).norm() > VELOCITY_TOLERANCE)
       continue;
     const Eigen::Vector2d j_t = jerk.segment<2>(row + 1);
-    const double bound = contacts[i].coneRate(std::abs(jerk(row)));
-    contacts[i].slipping = j_t.norm() > bound * (1.0 + 1e-12) + VELOCITY_TOLERANCE * jerk.norm();
-    if (contacts[i].slipping)
-      contacts[i].slip_direction = j_t.normalized();
+    const double bound = contacts[i].coneRate(std::abs(jerk(row)), y.data()[space.size + row]);
+    contacts[i].tangential.slipping = j_t.norm() > bound * (1.0 + 1e-12) + VELOCITY_TOLERANCE * jerk.norm();
+    if (contacts[i].tangential.slipping)
+      contacts[i].tangential.slip_direction = j_t.normalized();
   }
   // Every contact that starts slipping (here, or the cue tip by its velocity) gets its direction carrier.
   // All springs are relaxed at the start, so they all follow their slip at first.
   for (std::size_t i = 0; i < contacts.size(); ++i)
     if (contacts[i].sliding())
-      startSlip(contacts[i], contacts[i].slip_direction, y.data(), space, i, /*from_relaxed_springs=*/true);
+      startSlip(contacts[i], contacts[i].tangential.slip_direction, y.data(), space, i, /*from_relaxed_springs=*/true);
 }
 
 std::vector<ContactState> initialContactStates(const ImpactProblem& problem, const ContactSpace& space)

@@ -21,7 +21,7 @@ struct Guard
   std::size_t contact;
   ContactEventType type;
   /// Not a transition of the diagram but of the numerics: a contact's slip direction stops following the slip
-  /// (ContactState::quasi_steady) and is integrated from then on. Logged as no event.
+  /// (TangentialSpring::quasi_steady) and is integrated from then on. Logged as no event.
   bool releases_direction = false;
 };
 

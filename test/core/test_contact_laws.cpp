@@ -1,6 +1,7 @@
 // The contact laws behind NormalLaw: what every registered law must keep (a conformance test parametrised over
-// lawTypes(): energy never rises, random strikes and ball–ball–cloth collisions end apart), and each law's own
-// values against an independent computation.
+// lawTypes(): its spring's energy, rate and tangent stiffness agree with its force, an end of compression keeps e²
+// of the energy at a continuous force, energy never rises, random strikes and ball–ball–cloth collisions end apart),
+// and each law's own values against an independent computation.
 //
 // The elastic–plastic law's reference is Thornton 1997 (J. Appl. Mech. 64:383, eq. 39): for x = v_y/v < 1,
 // e_T = √(6√3/5) · √(1 − x²/6) · [x / (x + 2√(6/5 − x²/5))]^¼. A lone contact (a ball dropped on a frictionless
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <variant>
 
 #include "billiard_shot_planner/impact/laws/normal_law.hpp"
 #include "billiard_shot_planner/scenarios/ball_collision.hpp"
@@ -129,6 +131,47 @@ TEST_P(EveryLaw, RandomBallBallClothCollisionsNeverGainEnergyAndEndApart)
     EXPECT_GE((r.balls[1].velocity - r.balls[0].velocity).dot(n), -1e-9 * speed);  // apart
     for (const bsp::CollidedBall& ball : r.balls)
       EXPECT_GE(ball.velocity.z(), -1e-9 * speed);  // not into the cloth
+  }
+}
+
+TEST_P(EveryLaw, ItsSpringsEnergyRateAndStiffnessFollowFromItsForce)
+{
+  // Against central differences of the force (step h = 1e-6 of the deformation: error O(h²) ≈ 1e-12 relative, far
+  // inside the 1e-7 allowed), and at an end of compression against the energy and force it must keep.
+  std::mt19937 rng(41);
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    const bsp::NormalLaw law = randomLaw(GetParam(), rng);
+    const double k = logUniform(rng, 0.1, 10.0);
+    const double s = -logUniform(rng, 1e-3, 2.0);  // pressed
+    const double rate = uniform(rng, -3.0, 3.0);
+    const double e = uniform(rng, 0.05, 1.0);
+    std::visit(
+        [&](const auto& alternative)
+        {
+          const auto spring = alternative.spring();
+          EXPECT_EQ(bsp::isLinear(law), decltype(spring)::LINEAR);
+          const double h = 1e-6 * std::abs(s);
+          const double force = spring.force(k, s);
+          EXPECT_GT(force, 0.0);  // a pressed spring pushes apart
+          EXPECT_EQ(spring.energy(k, 0.0), 0.0);
+          EXPECT_GT(spring.energy(k, s), 0.0);
+          const double energy_slope = -(spring.energy(k, s + h) - spring.energy(k, s - h)) / (2.0 * h);
+          EXPECT_NEAR(energy_slope, force, 1e-7 * std::abs(force));  // F = −dE/ds
+          const double stiffness = -(spring.force(k, s + h) - spring.force(k, s - h)) / (2.0 * h);
+          EXPECT_NEAR(spring.stiffnessAt(k, s), stiffness, 1e-7 * stiffness);
+          EXPECT_NEAR(spring.forceRate(k, s, rate), -spring.stiffnessAt(k, s) * rate, 1e-12 * stiffness);
+          if (decltype(spring)::LINEAR)
+          {
+            EXPECT_NEAR(spring.force(k, 2.0 * s), 2.0 * force, 1e-12 * std::abs(force));
+          }
+          const double k_restitution = spring.restitutionStiffness(k, e * e);
+          const double s_restitution = spring.restitutionDeformation(s, e * e);
+          EXPECT_NEAR(spring.force(k_restitution, s_restitution), force, 1e-12 * force);
+          EXPECT_NEAR(spring.energy(k_restitution, s_restitution), e * e * spring.energy(k, s),
+                      1e-12 * spring.energy(k, s));
+        },
+        law);
   }
 }
 

@@ -1,12 +1,17 @@
 // The closed-form propagation of linear states (src/impact/linear_phase.cpp) against numerical integration of the
 // same spring dynamics (Bulirsch–Stoer at tolerance 1e-13): the same state sequence and the same final velocities
 // to 1e-9, on frictionless collisions, rigid links (e = 0), pure stick, sliding with a fixed direction (landings),
-// and cases whose sliding direction turns (massé strike, cushion hits), which must be left to the integrator.
+// and cases whose sliding direction turns (massé strike, cushion hits), which must be left to the integrator, as
+// must a phase with a loaded spring whose law is not linear.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "../../src/impact/contact_dynamics.hpp"
+#include "../../src/impact/contact_space.hpp"
+#include "../../src/impact/linear_phase.hpp"
+#include "../../src/impact/state_transitions.hpp"
 #include "../fixtures/paper_masse.hpp"
 #include "billiard_shot_planner/scenarios/ball_ball_table.hpp"
 #include "billiard_shot_planner/scenarios/ball_chain.hpp"
@@ -118,6 +123,31 @@ TEST(LinearPhase, TurningSlidingDirectionsAreLeftToTheIntegrator)
   cushion.on_cloth = false;
   cushion.velocity.z() = -0.3;
   expectSameSolution(cushion, "cushion hit in flight");
+}
+
+TEST(LinearPhase, APhaseWithASpringThatIsNotLinearIsLeftToTheIntegrator)
+{
+  // Two free bodies pressed by one frictionless contact: a linear phase, unless its spring says it is not linear.
+  bsp::ImpactProblem problem;
+  problem.mass_matrix = Eigen::Matrix2d::Identity();
+  problem.velocity = Eigen::Vector2d(1.0, 0.0);
+  bsp::Contact contact;
+  contact.normal = Eigen::Vector2d(-1.0, 1.0);
+  problem.contacts.push_back(contact);
+  const bsp::detail::ContactSpace space = bsp::detail::buildContactSpace(problem);
+  std::vector<bsp::detail::ContactState> states = bsp::detail::initialContactStates(problem, space);
+  states[0].phase = bsp::detail::NormalPhase::Compression;
+  bsp::detail::ContactDynamics dynamics(space, states, 1.0);
+  const bsp::detail::OdeState y0{0.0, -0.1};  // an impulse, a pressed spring
+  bsp::detail::LinearPhaseStepper stepper;
+  EXPECT_TRUE(states[0].normal.linear);
+  EXPECT_TRUE(stepper.build(space, states, dynamics, y0, 0.0, 0.1));
+  states[0].normal.linear = false;
+  dynamics.refresh();
+  EXPECT_FALSE(stepper.build(space, states, dynamics, y0, 0.0, 0.1));
+  states[0].phase = bsp::detail::NormalPhase::Inactive;  // unloaded, its law does not enter the phase
+  dynamics.refresh();
+  EXPECT_TRUE(stepper.build(space, states, dynamics, y0, 0.0, 0.1));
 }
 
 TEST(LinearPhase, ContactsNotReachedYetDoNotSwitchOnRoundOff)

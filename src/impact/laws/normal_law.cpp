@@ -38,6 +38,11 @@ const char* lawType(const NormalLaw& law)
   return std::visit([](const auto& alternative) { return std::decay_t<decltype(alternative)>::TYPE; }, law);
 }
 
+bool isLinear(const NormalLaw& law)
+{
+  return std::visit([](const auto& alternative) { return decltype(alternative.spring())::LINEAR; }, law);
+}
+
 std::vector<std::string> lawTypes()
 {
   return typesOf(std::make_index_sequence<std::variant_size_v<NormalLaw>>{});

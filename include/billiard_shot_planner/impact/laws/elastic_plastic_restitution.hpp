@@ -3,6 +3,7 @@
 #include <string>
 
 #include "billiard_shot_planner/core/expected.hpp"
+#include "billiard_shot_planner/impact/laws/linear_spring.hpp"
 
 namespace billiard_shot_planner
 {
@@ -14,13 +15,16 @@ namespace billiard_shot_planner
 ///
 /// 1 at v = v_y and falling as v^(−¼) far above it. The contact's `restitution` e0 is the restitution below the
 /// yield speed (losses the elastic–plastic picture leaves out: the cloth under a cushion, the rubber's hysteresis),
-/// and the law is e(v) = e0 · e_T(v) (docs/impact_model.md, "Restitution that depends on the impact").
+/// and the law is e(v) = e0 · e_T(v) (docs/impact_model.md, "Restitution that depends on the impact"). Its spring is
+/// linear: the speed enters only through the restitution of each compression.
 struct ElasticPlasticRestitution
 {
   static constexpr const char* TYPE = "elastic_plastic";
 
   double yield_speed = 1.0;  ///< v_y (m/s, > 0): the approach speed at which the contact starts to yield
 
+  /// The spring: linear, F = −k s.
+  LinearSpring spring() const { return {}; }
   template <class Visitor>
   void visitParameters(Visitor&& visit)
   {

@@ -10,14 +10,17 @@
 
 namespace billiard_shot_planner
 {
-/// How a contact's normal spring gives back its energy at an end of compression: one immutable law with its own
-/// parameters (docs/extending.md, "A new contact law"). The spring itself is linear, F = −k s: the state diagram's
-/// exact events, the closed form of a linear phase and the frequency bound of the integrator rest on it, and every
-/// law here keeps it. The first alternative is the default.
+/// A contact's normal law: one immutable type with its own parameters (docs/extending.md, "A new contact law"). A
+/// law is its spring (spring(): the force, stored energy and rate, the tangent stiffness, the restitution phase's
+/// stiffness and deformation after an end of compression, and whether it is linear, LINEAR, which gates the closed
+/// form of a phase) and its restitution (the energy an end of compression keeps). Every law registered here has the
+/// linear spring (LinearSpring) and differs in its restitution. The first alternative is the default.
 using NormalLaw = std::variant<ConstantRestitution, ElasticPlasticRestitution>;
 
 /// The law's type as configuration names it ("constant", "elastic_plastic").
 const char* lawType(const NormalLaw& law);
+/// Whether the law's spring is linear (its spring's LINEAR).
+bool isLinear(const NormalLaw& law);
 /// Every registered type, in the variant's order.
 std::vector<std::string> lawTypes();
 /// The law of a type, with its default parameters; an error naming `field`.type lists the types there are.
