@@ -495,15 +495,16 @@ constexpr double PRESS_TOLERANCE = 1e-12;
 bool isPressed(std::size_t index, const Eigen::VectorXd& jerk, const Eigen::VectorXd& w,
                const std::vector<ContactState>& contacts, const ContactSpace& space)
 {
-  // The springs' stiffness along each row. A resting contact's friction is bounded by its own normal force, which is
-  // what is being decided: its tangential springs hold nothing at these orders.
+  // The springs' stiffness along each row, their tangent stiffness relaxed (s = 0 at 0⁺). A resting contact's friction
+  // is bounded by its own normal force, which is what is being decided: its tangential springs hold nothing at these
+  // orders.
   Eigen::VectorXd stiffness = Eigen::VectorXd::Zero(space.size);
   for (std::size_t i = 0; i < contacts.size(); ++i)
   {
     if (!contacts[i].compliant())
       continue;
     const int row = space.offset[i];
-    stiffness(row) = contacts[i].normal.stiffness;
+    stiffness(row) = contacts[i].normal.stiffnessAt(0.0);
     const bool resting = std::abs(w(row)) <= VELOCITY_TOLERANCE;
     if (space.dim[i] == 3 && !contacts[i].tangential.slipping && !resting)
       stiffness.segment<2>(row + 1).setConstant(contacts[i].tangential.kappa);

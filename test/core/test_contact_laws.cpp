@@ -13,6 +13,7 @@
 #include <string>
 #include <variant>
 
+#include "../../src/impact/normal_spring.hpp"
 #include "billiard_shot_planner/impact/laws/normal_law.hpp"
 #include "billiard_shot_planner/scenarios/ball_collision.hpp"
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
@@ -136,8 +137,9 @@ TEST_P(EveryLaw, RandomBallBallClothCollisionsNeverGainEnergyAndEndApart)
 
 TEST_P(EveryLaw, ItsSpringsEnergyRateAndStiffnessFollowFromItsForce)
 {
-  // Against central differences of the force (step h = 1e-6 of the deformation: error O(h²) ≈ 1e-12 relative, far
-  // inside the 1e-7 allowed), and at an end of compression against the energy and force it must keep.
+  // Against central differences of the force (step h = 1e-6 of the deformation: truncation O(h²) ≈ 1e-12 and
+  // round-off ε|s|/h ≈ 1e-10 relative, far inside the 1e-7 allowed), and at an end of compression against the
+  // energy and force it must keep.
   std::mt19937 rng(41);
   for (int trial = 0; trial < 200; ++trial)
   {
@@ -159,8 +161,9 @@ TEST_P(EveryLaw, ItsSpringsEnergyRateAndStiffnessFollowFromItsForce)
           const double energy_slope = -(spring.energy(k, s + h) - spring.energy(k, s - h)) / (2.0 * h);
           EXPECT_NEAR(energy_slope, force, 1e-7 * std::abs(force));  // F = −dE/ds
           const double stiffness = -(spring.force(k, s + h) - spring.force(k, s - h)) / (2.0 * h);
-          EXPECT_NEAR(spring.stiffnessAt(k, s), stiffness, 1e-7 * stiffness);
-          EXPECT_NEAR(spring.forceRate(k, s, rate), -spring.stiffnessAt(k, s) * rate, 1e-12 * stiffness);
+          EXPECT_NEAR(spring.stiffnessAt(k, s), stiffness, 1e-7 * std::abs(stiffness));
+          EXPECT_NEAR(spring.forceRate(k, s, rate), -spring.stiffnessAt(k, s) * rate,
+                      1e-12 * std::abs(stiffness * rate));
           if (decltype(spring)::LINEAR)
           {
             EXPECT_NEAR(spring.force(k, 2.0 * s), 2.0 * force, 1e-12 * std::abs(force));
@@ -172,6 +175,36 @@ TEST_P(EveryLaw, ItsSpringsEnergyRateAndStiffnessFollowFromItsForce)
                       1e-12 * spring.energy(k, s));
         },
         law);
+  }
+}
+
+TEST_P(EveryLaw, AContactsEndOfCompressionKeepsItsLawsShareOfTheEnergy)
+{
+  // The engine's normal spring (NormalSpring): the restitution of a compression is the law's at its speed, in
+  // [0, e0], and ending it keeps e² of the stored energy at a continuous force, at the stiffness the chatter bound
+  // reads beforehand.
+  std::mt19937 rng(43);
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    bsp::detail::NormalSpring spring;
+    spring.law = randomLaw(GetParam(), rng);
+    spring.linear = bsp::isLinear(spring.law);
+    spring.stiffness = logUniform(rng, 0.1, 10.0);
+    spring.original_stiffness = spring.stiffness;
+    spring.low_speed_restitution = uniform(rng, 0.05, 1.0);
+    const double speed = logUniform(rng, 0.01, 10.0);
+    const double e = spring.restituteAt(speed);
+    EXPECT_EQ(e, bsp::restitutionOf(spring.law, spring.low_speed_restitution, speed));
+    EXPECT_GE(e, 0.0);
+    EXPECT_LE(e, spring.low_speed_restitution);
+    const double s = -logUniform(rng, 1e-3, 2.0);
+    const double force = spring.force(s);
+    const double energy = spring.energy(s);
+    const double restitution_stiffness = spring.restitutionStiffness();
+    const double s_restitution = spring.endCompression(s);
+    EXPECT_EQ(spring.stiffness, restitution_stiffness);
+    EXPECT_NEAR(spring.force(s_restitution), force, 1e-12 * force);
+    EXPECT_NEAR(spring.energy(s_restitution), e * e * energy, 1e-12 * energy);
   }
 }
 
