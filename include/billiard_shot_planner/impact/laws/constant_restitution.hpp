@@ -14,9 +14,9 @@ struct ConstantRestitution
 {
   static constexpr const char* TYPE = "constant";
 
-  /// No parameters beyond the contact's restitution.
   /// The spring: linear, F = −k s.
   LinearSpring spring() const { return {}; }
+  /// No parameters beyond the contact's restitution.
   template <class Visitor>
   void visitParameters(Visitor&& /*visit*/)
   {
