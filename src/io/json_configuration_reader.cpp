@@ -92,8 +92,9 @@ public:
     const auto [place, node] = find(path);
     if (!node)
     {
-      if (table.length != base_table_.length || table.width != base_table_.width)
-        pockets = sixPockets(table.length, table.width);
+      if (table.length != base_table_.length || table.width != base_table_.width ||
+          table.pocket_layout != base_table_.pocket_layout)
+        pockets = defaultPockets(table);
       return;
     }
     if (!node->is_array())

@@ -70,8 +70,9 @@ void YamlConfigurationReader::pockets(const std::string& path, std::vector<Pocke
   const YAML::Node node = place ? find(*place) : YAML::Node(YAML::NodeType::Undefined);
   if (!node)
   {
-    if (table.length != base_table_.length || table.width != base_table_.width)
-      pockets = sixPockets(table.length, table.width);
+    if (table.length != base_table_.length || table.width != base_table_.width ||
+        table.pocket_layout != base_table_.pocket_layout)
+      pockets = defaultPockets(table);
     return;
   }
   if (!node.IsSequence())

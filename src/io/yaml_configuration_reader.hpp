@@ -21,8 +21,8 @@ namespace yaml_io
 using FieldLocation = std::function<std::optional<std::string>(const std::string& configuration_path)>;
 
 /// Reads each field the layout has from the YAML node at its place, remembering the places it looked at. Pockets are
-/// [x, y, radius] or {centre: [x, y], radius: r}; pockets left out follow a table size that differs from
-/// `base_table`'s (sixPockets).
+/// [x, y, radius] or {centre: [x, y], radius: r}; pockets left out follow a table size or pocket layout
+/// that differs from `base_table`'s (defaultPockets).
 class YamlConfigurationReader final : public ConfigurationVisitor
 {
 public:

@@ -12,11 +12,29 @@ std::vector<Pocket> sixPockets(double length, double width)
   return {{{-x, -y}, 0.06}, {{x, -y}, 0.06}, {{-x, y}, 0.06}, {{x, y}, 0.06}, {{0.0, -y}, 0.065}, {{0.0, y}, 0.065}};
 }
 
+std::vector<Pocket> defaultPockets(const Table& table)
+{
+  return table.pocket_layout == PocketLayout::None ? std::vector<Pocket>{} : sixPockets(table.length, table.width);
+}
+
 double cushionReach(const Table& table, double radius)
 {
   const double sin_theta = std::clamp((table.cushion_height - radius) / radius, -1.0, 1.0);
   return radius * std::sqrt(1.0 - sin_theta * sin_theta);
 }
+
+namespace
+{
+Status validate(const PocketCut& cut, const std::string& field)
+{
+  return firstError({requirePositive(cut.mouth, field + ".mouth"),
+                     requireWithin(cut.facing_angle, 90.0, 180.0, field + ".facing_angle",
+                                   "degrees between the cushion's nose and its facing"),
+                     requireNonNegative(cut.shelf, field + ".shelf"),
+                     requireNonNegative(cut.jaw_radius, field + ".jaw_radius"),
+                     requirePositive(cut.drop_radius, field + ".drop_radius")});
+}
+}  // namespace
 
 Status validate(const Table& table, const std::string& field)
 {
@@ -24,7 +42,9 @@ Status validate(const Table& table, const std::string& field)
           firstError({requirePositive(table.length, field + ".length"), requirePositive(table.width, field + ".width"),
                       requirePositive(table.cushion_height, field + ".cushion_height"),
                       validate(table.cloth, field + ".cloth"), validate(table.cushion, field + ".cushion"),
-                      requireStiffnessRatio(table.cushion_stiffness_ratio, field + ".cushion_stiffness_ratio")});
+                      requireStiffnessRatio(table.cushion_stiffness_ratio, field + ".cushion_stiffness_ratio"),
+                      validate(table.corner_pockets, field + ".corner_pockets"),
+                      validate(table.side_pockets, field + ".side_pockets")});
       !status)
     return status;
   for (std::size_t i = 0; i < table.pockets.size(); ++i)
@@ -35,6 +55,8 @@ Status validate(const Table& table, const std::string& field)
         !status)
       return status;
   }
+  if (table.pocket_layout == PocketLayout::None && !table.pockets.empty())
+    return invalidArgument(field + ".pockets", "must be empty on a table without pockets (pocket_layout \"none\")");
   return {};
 }
 

@@ -16,10 +16,10 @@ namespace billiard_shot_planner
 {
 namespace
 {
-/// ~table/pockets, [[x, y, radius], …]; absent: six pockets laid out for the table's size.
+/// ~table/pockets, [[x, y, radius], …]; absent: the table's default ones for its size and layout (defaultPockets).
 Status readPockets(ParameterTree& parameters, const std::string& name, std::vector<Pocket>& pockets, const Table& table)
 {
-  pockets = sixPockets(table.length, table.width);
+  pockets = defaultPockets(table);
   const XmlRpc::XmlRpcValue* found = parameters.find(name);
   if (!found)
     return {};

@@ -20,6 +20,12 @@ const ChoiceNames<RollingModel>& rollingModels()
   return names;
 }
 
+const ChoiceNames<PocketLayout>& pocketLayouts()
+{
+  static const ChoiceNames<PocketLayout> names{{"six", PocketLayout::Six}, {"none", PocketLayout::None}};
+  return names;
+}
+
 const ChoiceNames<BallBallFriction>& ballBallFrictionModels()
 {
   static const ChoiceNames<BallBallFriction> names{{"alciatore", BallBallFriction::Alciatore},
@@ -103,6 +109,15 @@ Status visitSurface(ConfigurationVisitor& visitor, const std::string& path, Surf
   return {};
 }
 
+void visitPocketCut(ConfigurationVisitor& visitor, const std::string& path, PocketCut& cut)
+{
+  visitor.number(path + ".mouth", cut.mouth);
+  visitor.number(path + ".facing_angle", cut.facing_angle);
+  visitor.number(path + ".shelf", cut.shelf);
+  visitor.number(path + ".jaw_radius", cut.jaw_radius);
+  visitor.number(path + ".drop_radius", cut.drop_radius);
+}
+
 Status visitTable(ConfigurationVisitor& visitor, Table& table)
 {
   visitor.number("table.length", table.length);
@@ -113,6 +128,10 @@ Status visitTable(ConfigurationVisitor& visitor, Table& table)
           {visitSurface(visitor, "table.cloth", table.cloth), visitSurface(visitor, "table.cushion", table.cushion)});
       !status)
     return status;
+  if (Status status = visitEnum(visitor, "table.pocket_layout", pocketLayouts(), table.pocket_layout); !status)
+    return status;
+  visitPocketCut(visitor, "table.corner_pockets", table.corner_pockets);
+  visitPocketCut(visitor, "table.side_pockets", table.side_pockets);
   visitor.pockets("table.pockets", table.pockets, table);
   return {};
 }

@@ -3,9 +3,13 @@
 
 #include "billiard_shot_planner/io/parameter_file.hpp"
 #include "billiard_shot_planner/io/table_yaml.hpp"
+#include "billiard_shot_planner/motion/table_geometry.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
 
+#include <stdexcept>
+#include <tuple>
 #include <utility>
+#include <vector>
 
 namespace bsp = billiard_shot_planner;
 
@@ -129,4 +133,93 @@ TEST(TableYaml, ATableFileReadsAsTheSameFieldsInAParameterFile)
   ASSERT_EQ(from_table_file.table.pockets.size(), 2u);
   EXPECT_EQ(from_table_file.table.pockets[1].centre.y(), -0.71);
   EXPECT_EQ(from_table_file.ball_mass, 0.16);
+}
+
+namespace
+{
+bsp::TableFile shippedTable(const std::string& name)
+{
+  const auto loaded = bsp::loadTableFile(std::string(CONFIG_DIR) + "/tables/" + name);
+  if (!loaded)
+    throw std::runtime_error(name + ": " + loaded.error().describe());
+  return loaded.value();
+}
+}  // namespace
+
+TEST(TableYaml, TheShippedPoolTablesAreTheWpaSizesWithItsPockets)
+{
+  constexpr double INCH = 0.0254;
+  const std::vector<std::tuple<std::string, double, double>> sizes{
+      {"pool_7ft.yaml", 78.0, 39.0}, {"pool_8ft.yaml", 92.0, 46.0}, {"pool_9ft.yaml", 100.0, 50.0}};
+  for (const auto& [name, length, width] : sizes)
+  {
+    const bsp::Table table = shippedTable(name).table;
+    EXPECT_NEAR(table.length, length * INCH, 1e-12) << name;
+    EXPECT_NEAR(table.width, width * INCH, 1e-12) << name;
+    // WPA: the nose at 62.5-64.5 % of the 2.25 in ball, corner mouths 4.5-4.625 in, side 5-5.125 in.
+    EXPECT_GE(table.cushion_height, 0.625 * 2.25 * INCH) << name;
+    EXPECT_LE(table.cushion_height, 0.645 * 2.25 * INCH) << name;
+    EXPECT_GE(table.corner_pockets.mouth, 4.5 * INCH) << name;
+    EXPECT_LE(table.corner_pockets.mouth, 4.625 * INCH) << name;
+    EXPECT_GE(table.side_pockets.mouth, 5.0 * INCH) << name;
+    EXPECT_LE(table.side_pockets.mouth, 5.125 * INCH) << name;
+    const auto geometry = bsp::tableGeometry(table);
+    ASSERT_TRUE(geometry.ok()) << name << ": " << geometry.error().describe();
+    EXPECT_EQ(geometry.value().pockets.size(), 6u) << name;
+    // The capture regions follow the size: the corner ones on the corners.
+    ASSERT_EQ(table.pockets.size(), 6u) << name;
+    EXPECT_NEAR(std::abs(table.pockets[0].centre.x()), 0.5 * table.length, 1e-12) << name;
+  }
+  // The 9-ft file states the defaults.
+  const bsp::Table nine = shippedTable("pool_9ft.yaml").table, defaults;
+  EXPECT_EQ(nine.length, defaults.length);
+  EXPECT_EQ(nine.cushion_height, defaults.cushion_height);
+  for (const auto& [read, given] :
+       {std::pair{nine.corner_pockets, defaults.corner_pockets}, std::pair{nine.side_pockets, defaults.side_pockets}})
+  {
+    EXPECT_EQ(read.mouth, given.mouth);
+    EXPECT_EQ(read.facing_angle, given.facing_angle);
+    EXPECT_EQ(read.shelf, given.shelf);
+    EXPECT_EQ(read.jaw_radius, given.jaw_radius);
+    EXPECT_EQ(read.drop_radius, given.drop_radius);
+  }
+}
+
+TEST(TableYaml, TheShippedSnookerAndCaromTablesAreTheirGoverningBodiesSizes)
+{
+  const bsp::TableFile snooker = shippedTable("snooker_12ft.yaml");
+  EXPECT_EQ(snooker.table.length, 3.569);  // WPBSA: 3569 x 1778 mm, balls 52.5 mm
+  EXPECT_EQ(snooker.table.width, 1.778);
+  EXPECT_EQ(snooker.ball.radius, 0.02625);
+  const auto snooker_geometry = bsp::tableGeometry(snooker.table);
+  ASSERT_TRUE(snooker_geometry.ok()) << snooker_geometry.error().describe();
+  EXPECT_EQ(snooker_geometry.value().pockets.size(), 6u);
+
+  const bsp::TableFile carom = shippedTable("carom_10ft.yaml");
+  EXPECT_EQ(carom.table.length, 2.84);  // UMB: 2840 x 1420 mm, balls 61-61.5 mm, nose 37 mm
+  EXPECT_EQ(carom.table.width, 1.42);
+  EXPECT_EQ(carom.table.cushion_height, 0.037);
+  EXPECT_EQ(carom.table.pocket_layout, bsp::PocketLayout::None);
+  EXPECT_TRUE(carom.table.pockets.empty());
+  const auto carom_geometry = bsp::tableGeometry(carom.table);
+  ASSERT_TRUE(carom_geometry.ok()) << carom_geometry.error().describe();
+  EXPECT_TRUE(carom_geometry.value().pockets.empty());
+  EXPECT_EQ(carom_geometry.value().cushions.size(), 4u);
+}
+
+TEST(TableYaml, APocketCutOutOfRangeOrALayoutNotKnownNamesTheField)
+{
+  const auto angle = bsp::parseTableYaml("table: {corner_pockets: {facing_angle: 30}}");
+  ASSERT_FALSE(angle.ok());
+  EXPECT_EQ(angle.error().field, "table.corner_pockets.facing_angle");
+  const auto layout = bsp::parseTableYaml("table: {pocket_layout: eight}");
+  ASSERT_FALSE(layout.ok());
+  EXPECT_EQ(layout.error().field, "table.pocket_layout");
+  // A table without pockets lays no capture regions, and refuses listed ones.
+  const auto carom = bsp::parseTableYaml("table: {pocket_layout: none}");
+  ASSERT_TRUE(carom.ok()) << carom.error().describe();
+  EXPECT_TRUE(carom.value().pockets.empty());
+  const auto contradiction = bsp::parseTableYaml("table: {pocket_layout: none, pockets: [[0, 0, 0.05]]}");
+  ASSERT_FALSE(contradiction.ok());
+  EXPECT_EQ(contradiction.error().field, "table.pockets");
 }

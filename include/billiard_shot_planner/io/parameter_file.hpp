@@ -21,9 +21,10 @@ struct ParameterFile
 /// Reads a parameter file in the node's format (config/default.yaml, config/paper_masse.yaml, config/cues/*.yaml,
 /// config/table_9ft.yaml) over `base`: every field of the configuration by its path (`table: cloth: friction:`), a
 /// law's type before its parameters, pockets as [x, y, radius] or {centre: [x, y], radius}. A field the file leaves
-/// out keeps base's value; pockets left out follow a changed table size (sixPockets). Errors: InvalidArgument naming
-/// the field ("table.cloth.friction": a value of the wrong type, out of range; "table.cloth.frition": a key of the
-/// configuration's own sections that is none of its fields), or "parameter_file" for text that is not YAML.
+/// out keeps base's value; pockets left out follow a changed table size or layout (defaultPockets). Errors:
+/// InvalidArgument naming the field ("table.cloth.friction": a value of the wrong type, out of range;
+/// "table.cloth.frition": a key of the configuration's own sections that is none of its fields), or "parameter_file"
+/// for text that is not YAML.
 Expected<ParameterFile> parseParameterFile(const std::string& text, const ShotConfiguration& base = {});
 /// The same from a file (error field "parameter_file" when it cannot be opened).
 Expected<ParameterFile> loadParameterFile(const std::string& path, const ShotConfiguration& base = {});

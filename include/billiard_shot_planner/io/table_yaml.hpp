@@ -27,7 +27,7 @@ Expected<TableFile> parseTableFile(const std::string& text);
 Expected<TableFile> loadTableFile(const std::string& path);
 
 /// Reads a table from YAML text in the format of config/table_9ft.yaml (a top-level `table:` map). Fields that
-/// are absent keep the defaults of Table; pockets default to sixPockets() for the given length and width. The
+/// are absent keep the defaults of Table; pockets default to defaultPockets() for the given size and layout. The
 /// error names the field.
 Expected<Table> parseTableYaml(const std::string& text);
 

@@ -20,6 +20,23 @@ struct Pocket
 /// middle of the long cushions (radius 0.065 m).
 std::vector<Pocket> sixPockets(double length, double width);
 
+/// How a pocket is cut into the cushions, in the terms of the WPA's equipment specifications (docs/tables.md).
+struct PocketCut
+{
+  double mouth = 0.0;         ///< m, between the jaw points, where the two cushions' noses turn into the pocket
+  double facing_angle = 0.0;  ///< deg, the cushion's angle at its jaw point, between its nose and its facing
+  double shelf = 0.0;         ///< m, from the middle of the mouth, along the pocket's axis, to the slate's cut
+  double jaw_radius = 0.0;    ///< m, the rounding of each jaw point (0: a sharp point)
+  double drop_radius = 0.0;   ///< m, the slate's cut as a circle: a ball whose centre passes over it falls
+};
+
+/// Which pockets the table has: six (pool, snooker) or none (carom).
+enum class PocketLayout
+{
+  Six,
+  None
+};
+
 /// A rectangular pool table in the table frame: origin at the centre of the playing surface (the cloth), x along
 /// its length, z up. Cushion noses run along the four edges of the playing surface at `cushion_height` above the
 /// cloth. Defaults: a 9-ft pool table (see config/table_9ft.yaml for sources).
@@ -30,10 +47,20 @@ struct Table
   double cushion_height = 0.0363;  ///< m, nose above the cloth (WPA: 63.5 % of a 57.15 mm ball)
   std::vector<Pocket> pockets = sixPockets(2.54, 1.27);
 
+  /// The pockets' cuts, from which the table's geometry (tableGeometry) lays out its jaws and drop regions. The WPA
+  /// ranges' middles: corner mouth 4.5-4.625 in at 142 deg, shelf 1-2.25 in; side mouth 5-5.125 in at 104 deg, shelf
+  /// 0-0.375 in. The jaw's rounding and the slate's cut are not specified (docs/tables.md says how they are chosen).
+  PocketLayout pocket_layout = PocketLayout::Six;
+  PocketCut corner_pockets{0.1158875, 142.0, 0.041275, 0.005, 0.0529};
+  PocketCut side_pockets{0.12858750, 104.0, 0.0047625, 0.005, 0.0631};
+
   SurfaceContact cloth{0.51625, 0.152479, 10.0};  ///< ball on cloth: e, μ, η² (paper §9.2)
   SurfaceContact cushion{0.85, 0.2, 10.0};        ///< ball on cushion nose: e, μ, η²
   double cushion_stiffness_ratio = 1.0;           ///< k_cushion / k_cloth
 };
+
+/// The capture regions a table has when none are given: sixPockets for its size, none without pockets.
+std::vector<Pocket> defaultPockets(const Table& table);
 
 /// Checks dimensions, pockets and contact laws; the error names the field ("table.cushion.friction").
 Status validate(const Table& table, const std::string& field = "table");

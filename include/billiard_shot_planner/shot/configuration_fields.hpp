@@ -27,7 +27,7 @@ public:
   /// visitor that sets it to a name not among the options makes visitConfiguration fail naming `path`.
   virtual void choice(const std::string& path, std::string& value, const std::vector<std::string>& options) = 0;
   /// The table's pockets ("table.pockets"), after the table's size: a reader that finds none may lay the default
-  /// ones out for the size it read (sixPockets).
+  /// ones out for the size and layout it read (defaultPockets).
   virtual void pockets(const std::string& path, std::vector<Pocket>& pockets, const Table& table) = 0;
   /// The visitor's first error, once it has failed: the walk stops and returns it.
   Status status() const { return first_error_; }
