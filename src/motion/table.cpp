@@ -1,6 +1,7 @@
 #include "billiard_shot_planner/motion/table.hpp"
 #include <algorithm>
 #include <cmath>
+#include "billiard_shot_planner/motion/table_outline.hpp"
 
 #include "billiard_shot_planner/core/validation.hpp"
 
@@ -23,8 +24,6 @@ double cushionReach(const Table& table, double radius)
   return radius * std::sqrt(1.0 - sin_theta * sin_theta);
 }
 
-namespace
-{
 Status validate(const PocketCut& cut, const std::string& field)
 {
   return firstError({requirePositive(cut.mouth, field + ".mouth"),
@@ -34,7 +33,6 @@ Status validate(const PocketCut& cut, const std::string& field)
                      requireNonNegative(cut.jaw_radius, field + ".jaw_radius"),
                      requirePositive(cut.drop_radius, field + ".drop_radius")});
 }
-}  // namespace
 
 Status validate(const Table& table, const std::string& field)
 {
@@ -55,8 +53,9 @@ Status validate(const Table& table, const std::string& field)
         !status)
       return status;
   }
-  if (table.pocket_layout == PocketLayout::None && !table.pockets.empty())
-    return invalidArgument(field + ".pockets", "must be empty on a table without pockets (pocket_layout \"none\")");
+  // The cuts must also fit the table: jaws that leave a rail, facings that stay apart.
+  if (auto outline = tableOutline(table, field); !outline)
+    return outline.error();
   return {};
 }
 

@@ -1,4 +1,5 @@
 #include "shot_predictor_node.hpp"
+#include "table_message.hpp"
 
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
@@ -151,6 +152,10 @@ ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& pri
   prediction_publisher_ = private_node.advertise<ShotPrediction>("prediction", 10, true);
   marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("trajectory_markers", 1, true);
   marker_publisher_.publish(tableMarkers(settings_.shot.table, settings_.target_frame));  // rviz has a table at once
+  // Latched: the table's size, cushions and pockets do not change while the node runs (tuning leaves them).
+  table_publisher_ = private_node.advertise<TableGeometry>("table", 1, true);
+  table_publisher_.publish(tableMessage(tableOutline(settings_.shot.table).value(), settings_.shot.table,
+                                        settings_.target_frame, ros::Time::now()));
   // The tuning server starts from the loaded parameters, not from the .cfg defaults.
   tuning_server_ = std::make_unique<dynamic_reconfigure::Server<ShotPredictorConfig>>(
       tuning_mutex_, ros::NodeHandle(private_node, "tuning"));
@@ -182,6 +187,7 @@ ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& pri
   service_ = private_node.advertiseService("predict_shot", &ShotPredictorNode::predict, this);
   configuration_service_ =
       private_node.advertiseService("get_configuration", &ShotPredictorNode::describeConfiguration, this);
+  table_service_ = private_node.advertiseService("get_table", &ShotPredictorNode::describeTable, this);
   diagnostics_timer_ = node.createTimer(ros::Duration(1.0), [this](const ros::TimerEvent&) { diagnostics_.update(); });
   if (settings_.cockpit.enabled)
     animator_ = std::make_unique<ShotAnimator>(private_node, settings_.cockpit,
@@ -484,6 +490,21 @@ bool ShotPredictorNode::describeConfiguration(GetConfiguration::Request& /*reque
   response.values = description.values;
   response.choice_names = description.choice_names;
   response.choice_values = description.choice_values;
+  response.success = true;
+  response.message = "ok";
+  response.error_code = errorCode(ErrorCode::SUCCESS);
+  return true;
+}
+
+bool ShotPredictorNode::describeTable(GetTable::Request& /*request*/, GetTable::Response& response)
+{
+  Table table;
+  {
+    std::lock_guard<std::mutex> lock(configuration_mutex_);
+    table = settings_.shot.table;
+  }
+  // The settings were validated, the outline with them: it lays out.
+  response.table = tableMessage(tableOutline(table).value(), table, settings_.target_frame, ros::Time::now());
   response.success = true;
   response.message = "ok";
   response.error_code = errorCode(ErrorCode::SUCCESS);

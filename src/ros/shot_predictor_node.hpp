@@ -1,6 +1,7 @@
 #pragma once
 
 #include <billiard_shot_planner/GetConfiguration.h>
+#include <billiard_shot_planner/GetTable.h>
 #include <billiard_shot_planner/PlayerStroke.h>
 #include <billiard_shot_planner/PredictShot.h>
 #include <billiard_shot_planner/ShotPredictorConfig.h>
@@ -49,6 +50,8 @@ private:
   bool predict(PredictShot::Request& request, PredictShot::Response& response);
   bool answer(PredictShot::Request& request, PredictShot::Response& response);
   bool describeConfiguration(GetConfiguration::Request& request, GetConfiguration::Response& response);
+  /// ~get_table: the table's outline, as latched on ~table.
+  bool describeTable(GetTable::Request& request, GetTable::Response& response);
   /// The cue's pose and the cue ball's position in the table frame; the cue ball's position is left for the table
   /// to give when it holds the cue ball.
   Expected<CuePlacement> placeCue(const PredictShot::Request& request, bool cue_ball_in_table) const;
@@ -94,8 +97,10 @@ private:
   tf2_ros::TransformListener listener_{buffer_};
   ros::Publisher prediction_publisher_;
   ros::Publisher marker_publisher_;
+  ros::Publisher table_publisher_;
   ros::ServiceServer service_;
   ros::ServiceServer configuration_service_;
+  ros::ServiceServer table_service_;
   /// ~table_state has a queue and a thread of its own, so that no long call (a plan, a fit) holds up its intake.
   ros::CallbackQueue table_queue_;
   ros::AsyncSpinner table_spinner_{1, &table_queue_};

@@ -3,7 +3,7 @@
 
 #include "billiard_shot_planner/io/parameter_file.hpp"
 #include "billiard_shot_planner/io/table_yaml.hpp"
-#include "billiard_shot_planner/motion/table_geometry.hpp"
+#include "billiard_shot_planner/motion/table_outline.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
 
 #include <stdexcept>
@@ -163,7 +163,7 @@ TEST(TableYaml, TheShippedPoolTablesAreTheWpaSizesWithItsPockets)
     EXPECT_LE(table.corner_pockets.mouth, 4.625 * INCH) << name;
     EXPECT_GE(table.side_pockets.mouth, 5.0 * INCH) << name;
     EXPECT_LE(table.side_pockets.mouth, 5.125 * INCH) << name;
-    const auto geometry = bsp::tableGeometry(table);
+    const auto geometry = bsp::tableOutline(table);
     ASSERT_TRUE(geometry.ok()) << name << ": " << geometry.error().describe();
     EXPECT_EQ(geometry.value().pockets.size(), 6u) << name;
     // The capture regions follow the size: the corner ones on the corners.
@@ -191,7 +191,7 @@ TEST(TableYaml, TheShippedSnookerAndCaromTablesAreTheirGoverningBodiesSizes)
   EXPECT_EQ(snooker.table.length, 3.569);  // WPBSA: 3569 x 1778 mm, balls 52.5 mm
   EXPECT_EQ(snooker.table.width, 1.778);
   EXPECT_EQ(snooker.ball.radius, 0.02625);
-  const auto snooker_geometry = bsp::tableGeometry(snooker.table);
+  const auto snooker_geometry = bsp::tableOutline(snooker.table);
   ASSERT_TRUE(snooker_geometry.ok()) << snooker_geometry.error().describe();
   EXPECT_EQ(snooker_geometry.value().pockets.size(), 6u);
 
@@ -201,7 +201,7 @@ TEST(TableYaml, TheShippedSnookerAndCaromTablesAreTheirGoverningBodiesSizes)
   EXPECT_EQ(carom.table.cushion_height, 0.037);
   EXPECT_EQ(carom.table.pocket_layout, bsp::PocketLayout::None);
   EXPECT_TRUE(carom.table.pockets.empty());
-  const auto carom_geometry = bsp::tableGeometry(carom.table);
+  const auto carom_geometry = bsp::tableOutline(carom.table);
   ASSERT_TRUE(carom_geometry.ok()) << carom_geometry.error().describe();
   EXPECT_TRUE(carom_geometry.value().pockets.empty());
   EXPECT_EQ(carom_geometry.value().cushions.size(), 4u);

@@ -2,6 +2,7 @@
 // input is answered with success = false and a reason, markers are latched arrays that replace each other, and
 // concurrent callers are all served.
 #include <billiard_shot_planner/GetConfiguration.h>
+#include <billiard_shot_planner/GetTable.h>
 #include <billiard_shot_planner/PredictShot.h>
 #include <billiard_shot_planner/ShotPrediction.h>
 #include <billiard_shot_planner/TableState.h>
@@ -815,4 +816,41 @@ TEST_F(PredictShotNode, ThePredictionIsStampedWithTheStrikeAndLatched)
     ros::spinOnce();
   }
   EXPECT_TRUE(received);
+}
+
+// ~get_table answers the table the node predicts on by ids a client can name, and ~table holds the same, latched:
+// default.yaml's 9-ft table, its six pockets' mouths the WPA's (corner 4.5-4.625 in, side 5-5.125 in).
+TEST_F(PredictShotNode, TheTableIsAnsweredAndLatchedWithItsPocketsIds)
+{
+  bsp::GetTable srv;
+  ASSERT_TRUE(ros::service::call("/shot_predictor/get_table", srv));
+  ASSERT_TRUE(srv.response.success) << srv.response.message;
+  EXPECT_EQ(srv.response.error_code.val, bsp::ErrorCode::SUCCESS);
+  const bsp::TableGeometry& table = srv.response.table;
+  EXPECT_EQ(table.header.frame_id, "table");
+  EXPECT_EQ(table.length, 2.54);
+  std::set<std::string> ids;
+  for (const auto& pocket : table.pockets)
+  {
+    ids.insert(pocket.id);
+    const double mouth = std::hypot(pocket.jaw_out.x - pocket.jaw_in.x, pocket.jaw_out.y - pocket.jaw_in.y);
+    const bool side = pocket.id.find("side") != std::string::npos;
+    EXPECT_GE(mouth, (side ? 5.0 : 4.5) * 0.0254 - 1e-12) << pocket.id;
+    EXPECT_LE(mouth, (side ? 5.125 : 4.625) * 0.0254 + 1e-12) << pocket.id;
+  }
+  EXPECT_EQ(ids,
+            (std::set<std::string>{"bottom_left", "bottom_side", "bottom_right", "top_right", "top_side", "top_left"}));
+  for (const auto& segment : table.cushions)
+    EXPECT_EQ(segment.start.z, table.cushion_height) << segment.id;
+
+  ros::NodeHandle node;
+  std::atomic<std::size_t> latched_pockets{0};
+  ros::Subscriber subscriber = node.subscribe<bsp::TableGeometry>(
+      "/shot_predictor/table", 1, [&](const bsp::TableGeometry::ConstPtr& m) { latched_pockets = m->pockets.size(); });
+  for (int attempt = 0; attempt < 100 && latched_pockets == 0; ++attempt)
+  {
+    ros::Duration(0.05).sleep();
+    ros::spinOnce();
+  }
+  EXPECT_EQ(latched_pockets, 6u);
 }

@@ -47,7 +47,7 @@ struct Table
   double cushion_height = 0.0363;  ///< m, nose above the cloth (WPA: 63.5 % of a 57.15 mm ball)
   std::vector<Pocket> pockets = sixPockets(2.54, 1.27);
 
-  /// The pockets' cuts, from which the table's geometry (tableGeometry) lays out its jaws and drop regions. The WPA
+  /// The pockets' cuts, from which the table's geometry (tableOutline) lays out its jaws and drop regions. The WPA
   /// ranges' middles: corner mouth 4.5-4.625 in at 142 deg, shelf 1-2.25 in; side mouth 5-5.125 in at 104 deg, shelf
   /// 0-0.375 in. The jaw's rounding and the slate's cut are not specified (docs/tables.md says how they are chosen).
   PocketLayout pocket_layout = PocketLayout::Six;
@@ -62,7 +62,11 @@ struct Table
 /// The capture regions a table has when none are given: sixPockets for its size, none without pockets.
 std::vector<Pocket> defaultPockets(const Table& table);
 
-/// Checks dimensions, pockets and contact laws; the error names the field ("table.cushion.friction").
+/// Checks a pocket's cut field by field; the error names the field ("table.corner_pockets.mouth").
+Status validate(const PocketCut& cut, const std::string& field);
+
+/// Checks dimensions, pockets and contact laws, and that the pockets' cuts lay out (tableOutline); the error names
+/// the field ("table.cushion.friction").
 Status validate(const Table& table, const std::string& field = "table");
 
 /// The horizontal distance between a ball's centre and a cushion nose when they touch with the ball on the cloth:

@@ -12,7 +12,7 @@ namespace billiard_shot_planner
 /// One piece of the cushions' noses seen from above (at the nose's height, in the table frame): a straight segment
 /// — a rail between two pockets or a jaw's facing — or a circular arc, a jaw's rounded point. Walking from `start`
 /// to `end` the cloth lies on the left, so the outline runs counterclockwise around the table.
-struct CushionSegment
+struct NoseSegment
 {
   enum class Shape
   {
@@ -51,13 +51,13 @@ struct PocketOpening
 
 /// The table's outline: cushion segments counterclockwise from the bottom-left corner pocket (the corner at −x, −y)
 /// and the pockets, each with an id unique on the table.
-struct TableGeometry
+struct TableOutline
 {
-  std::vector<CushionSegment> cushions;
+  std::vector<NoseSegment> cushions;
   std::vector<PocketOpening> pockets;
 
   /// The segment or pocket with `id`, or null.
-  const CushionSegment* cushion(const std::string& id) const;
+  const NoseSegment* cushion(const std::string& id) const;
   const PocketOpening* pocket(const std::string& id) const;
 };
 
@@ -66,6 +66,6 @@ struct TableGeometry
 /// angle with their points rounded, and its drop region lies behind the shelf. Errors: InvalidArgument naming the
 /// cut's field when the table does not validate, when two pockets' jaws leave no rail between them, when a jaw's
 /// rounding does not fit on its rail or facing, or when a pocket's facings meet before the slate's cut.
-Expected<TableGeometry> tableGeometry(const Table& table, const std::string& field = "table");
+Expected<TableOutline> tableOutline(const Table& table, const std::string& field = "table");
 
 }  // namespace billiard_shot_planner

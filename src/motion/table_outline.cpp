@@ -1,6 +1,8 @@
-#include "billiard_shot_planner/motion/table_geometry.hpp"
+#include "billiard_shot_planner/motion/table_outline.hpp"
 
 #include <Eigen/Geometry>
+#include "billiard_shot_planner/core/validation.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -45,9 +47,9 @@ std::vector<PocketPlace> sixPocketPlaces(double x, double y)
           {"top_left", {-x, y}, -east, -north, true, "top", "left", "rail.left"}};
 }
 
-CushionSegment line(std::string id, const Eigen::Vector2d& start, const Eigen::Vector2d& end)
+NoseSegment line(std::string id, const Eigen::Vector2d& start, const Eigen::Vector2d& end)
 {
-  CushionSegment segment;
+  NoseSegment segment;
   segment.id = std::move(id);
   segment.start = start;
   segment.end = end;
@@ -58,8 +60,8 @@ CushionSegment line(std::string id, const Eigen::Vector2d& start, const Eigen::V
 struct Jaw
 {
   Eigen::Vector2d rail_end;  ///< where the straight rail stops (the arc's tangent point on it)
-  CushionSegment point;      ///< the rounding (absent when the radius is 0)
-  CushionSegment facing;     ///< walked in the outline's direction
+  NoseSegment point;         ///< the rounding (absent when the radius is 0)
+  NoseSegment facing;        ///< walked in the outline's direction
   bool rounded = false;
 };
 
@@ -76,7 +78,7 @@ Jaw jawAt(const std::string& id, const Eigen::Vector2d& tip, const Eigen::Vector
   const Eigen::Vector2d facing_end = tip + facing_length * facing;
   jaw.facing = entering ? line(id + ".facing", on_facing, facing_end) : line(id + ".facing", facing_end, on_facing);
   jaw.point.id = id + ".point";
-  jaw.point.shape = CushionSegment::Shape::Arc;
+  jaw.point.shape = NoseSegment::Shape::Arc;
   jaw.point.radius = radius;
   jaw.point.centre = tip + (facing - rail).normalized() * (radius / std::sin(0.5 * cut_angle));
   jaw.point.start = entering ? on_rail : on_facing;
@@ -136,7 +138,7 @@ Expected<PocketLayoutParts> layPocket(const PocketPlace& place, const PocketCut&
   return parts;
 }
 
-void appendJaw(std::vector<CushionSegment>& cushions, const Jaw& jaw, bool entering)
+void appendJaw(std::vector<NoseSegment>& cushions, const Jaw& jaw, bool entering)
 {
   if (!entering)
     cushions.push_back(jaw.facing);
@@ -146,21 +148,21 @@ void appendJaw(std::vector<CushionSegment>& cushions, const Jaw& jaw, bool enter
     cushions.push_back(jaw.facing);
 }
 
-TableGeometry caromGeometry(double x, double y)
+TableOutline caromGeometry(double x, double y)
 {
-  TableGeometry geometry;
-  geometry.cushions = {line("rail.bottom", {-x, -y}, {x, -y}), line("rail.right", {x, -y}, {x, y}),
-                       line("rail.top", {x, y}, {-x, y}), line("rail.left", {-x, y}, {-x, -y})};
-  return geometry;
+  TableOutline outline;
+  outline.cushions = {line("rail.bottom", {-x, -y}, {x, -y}), line("rail.right", {x, -y}, {x, y}),
+                      line("rail.top", {x, y}, {-x, y}), line("rail.left", {-x, y}, {-x, -y})};
+  return outline;
 }
 }  // namespace
 
-double CushionSegment::length() const
+double NoseSegment::length() const
 {
   return shape == Shape::Line ? (end - start).norm() : std::abs(sweep) * radius;
 }
 
-Eigen::Vector2d CushionSegment::closestPoint(const Eigen::Vector2d& point) const
+Eigen::Vector2d NoseSegment::closestPoint(const Eigen::Vector2d& point) const
 {
   if (shape == Shape::Line)
   {
@@ -180,22 +182,28 @@ Eigen::Vector2d CushionSegment::closestPoint(const Eigen::Vector2d& point) const
   return (point - start).norm() <= (point - end).norm() ? start : end;
 }
 
-const CushionSegment* TableGeometry::cushion(const std::string& id) const
+const NoseSegment* TableOutline::cushion(const std::string& id) const
 {
   const auto found = std::find_if(cushions.begin(), cushions.end(), [&](const auto& c) { return c.id == id; });
   return found == cushions.end() ? nullptr : &*found;
 }
 
-const PocketOpening* TableGeometry::pocket(const std::string& id) const
+const PocketOpening* TableOutline::pocket(const std::string& id) const
 {
   const auto found = std::find_if(pockets.begin(), pockets.end(), [&](const auto& p) { return p.id == id; });
   return found == pockets.end() ? nullptr : &*found;
 }
 
-Expected<TableGeometry> tableGeometry(const Table& table, const std::string& field)
+Expected<TableOutline> tableOutline(const Table& table, const std::string& field)
 {
-  if (Status status = validate(table, field); !status)
+  if (Status status =
+          firstError({requirePositive(table.length, field + ".length"), requirePositive(table.width, field + ".width"),
+                      validate(table.corner_pockets, field + ".corner_pockets"),
+                      validate(table.side_pockets, field + ".side_pockets")});
+      !status)
     return status.error();
+  if (table.pocket_layout == PocketLayout::None && !table.pockets.empty())
+    return invalidArgument(field + ".pockets", "must be empty on a table without pockets (pocket_layout \"none\")");
   const double x = 0.5 * table.length, y = 0.5 * table.width;
   if (table.pocket_layout == PocketLayout::None)
     return caromGeometry(x, y);
@@ -211,13 +219,13 @@ Expected<TableGeometry> tableGeometry(const Table& table, const std::string& fie
       return laid.error();
     parts.push_back(laid.value());
   }
-  TableGeometry geometry;
+  TableOutline outline;
   for (std::size_t k = 0; k < places.size(); ++k)
   {
     const PocketLayoutParts& here = parts[k];
     const PocketLayoutParts& next = parts[(k + 1) % parts.size()];
-    geometry.pockets.push_back(here.opening);
-    appendJaw(geometry.cushions, here.out, false);
+    outline.pockets.push_back(here.opening);
+    appendJaw(outline.cushions, here.out, false);
     const Eigen::Vector2d rail_start = here.out.rail_end, rail_end = next.in.rail_end;
     if (!((rail_end - rail_start).dot(places[k].out) > 0.0))
     {
@@ -226,11 +234,11 @@ Expected<TableGeometry> tableGeometry(const Table& table, const std::string& fie
           field + (between_corners ? ".corner_pockets.mouth" : ".side_pockets.mouth"),
           "leaves no cushion on " + std::string(places[k].rail_after) + " between the pockets' jaws");
     }
-    geometry.cushions.push_back(line(places[k].rail_after, rail_start, rail_end));
-    appendJaw(geometry.cushions, next.in, true);
+    outline.cushions.push_back(line(places[k].rail_after, rail_start, rail_end));
+    appendJaw(outline.cushions, next.in, true);
   }
   // The walk began at the bottom-left pocket's jaw out; its jaw in, laid last, closes the outline there.
-  return geometry;
+  return outline;
 }
 
 }  // namespace billiard_shot_planner

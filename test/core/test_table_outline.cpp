@@ -3,7 +3,7 @@
 // specification's numbers the table was given, not with the builder's own arithmetic.
 #include <gtest/gtest.h>
 
-#include "billiard_shot_planner/motion/table_geometry.hpp"
+#include "billiard_shot_planner/motion/table_outline.hpp"
 
 #include <cmath>
 #include <functional>
@@ -23,30 +23,30 @@ double cross(const Vector2d& a, const Vector2d& b)
 }
 
 /// Where the lines through two straight segments cross.
-Vector2d intersection(const bsp::CushionSegment& a, const bsp::CushionSegment& b)
+Vector2d intersection(const bsp::NoseSegment& a, const bsp::NoseSegment& b)
 {
   const Vector2d da = a.end - a.start, db = b.end - b.start;
   const double along = cross(b.start - a.start, db) / cross(da, db);
   return a.start + along * da;
 }
 
-double distanceToLine(const Vector2d& point, const bsp::CushionSegment& segment)
+double distanceToLine(const Vector2d& point, const bsp::NoseSegment& segment)
 {
   const Vector2d along = (segment.end - segment.start).normalized();
   return std::abs(cross(along, point - segment.start));
 }
 
-const bsp::CushionSegment& segment(const bsp::TableGeometry& geometry, const std::string& id)
+const bsp::NoseSegment& segment(const bsp::TableOutline& geometry, const std::string& id)
 {
-  const bsp::CushionSegment* found = geometry.cushion(id);
+  const bsp::NoseSegment* found = geometry.cushion(id);
   if (!found)
     throw std::runtime_error("no segment " + id);
   return *found;
 }
 
-bsp::TableGeometry built(const bsp::Table& table)
+bsp::TableOutline built(const bsp::Table& table)
 {
-  auto geometry = bsp::tableGeometry(table);
+  auto geometry = bsp::tableOutline(table);
   if (!geometry)
     throw std::runtime_error(geometry.error().describe());
   return geometry.value();
@@ -77,10 +77,10 @@ const std::vector<JawCase>& jawCases()
 }
 }  // namespace
 
-TEST(TableGeometry, ThePocketsMouthsAndCutsAreTheWpaSpecifications)
+TEST(TableOutline, ThePocketsMouthsAndCutsAreTheWpaSpecifications)
 {
   const bsp::Table table;  // the 9-ft table
-  const bsp::TableGeometry geometry = built(table);
+  const bsp::TableOutline geometry = built(table);
   ASSERT_EQ(geometry.pockets.size(), 6u);
   for (const bsp::PocketOpening& pocket : geometry.pockets)
   {
@@ -117,8 +117,8 @@ TEST(TableGeometry, ThePocketsMouthsAndCutsAreTheWpaSpecifications)
   {
     // WPA: the cushion is cut at 142 deg (corner) and 104 deg (side) between its nose and its facing, +-1 deg.
     const std::string facing_id = "pocket." + jaw.pocket + ".jaw." + jaw.jaw + ".facing";
-    const bsp::CushionSegment& rail = segment(geometry, jaw.rail);
-    const bsp::CushionSegment& facing = segment(geometry, facing_id);
+    const bsp::NoseSegment& rail = segment(geometry, jaw.rail);
+    const bsp::NoseSegment& facing = segment(geometry, facing_id);
     const Vector2d tip = intersection(rail, facing);
     const Vector2d back_along_rail =
         (((rail.start - tip).norm() > (rail.end - tip).norm() ? rail.start : rail.end) - tip).normalized();
@@ -131,20 +131,20 @@ TEST(TableGeometry, ThePocketsMouthsAndCutsAreTheWpaSpecifications)
   }
 }
 
-TEST(TableGeometry, EachJawsRoundingTouchesItsRailAndFacingAndTheOutlineIsUnbroken)
+TEST(TableOutline, EachJawsRoundingTouchesItsRailAndFacingAndTheOutlineIsUnbroken)
 {
   const bsp::Table table;
-  const bsp::TableGeometry geometry = built(table);
+  const bsp::TableOutline geometry = built(table);
   // Six rails, and per pocket two jaws of a facing and a rounded point.
   ASSERT_EQ(geometry.cushions.size(), 6u + 6u * 4u);
   std::set<std::string> ids;
-  for (const bsp::CushionSegment& segment : geometry.cushions)
+  for (const bsp::NoseSegment& segment : geometry.cushions)
     EXPECT_TRUE(ids.insert(segment.id).second) << segment.id;
   for (const JawCase& jaw : jawCases())
   {
     const std::string prefix = "pocket." + jaw.pocket + ".jaw." + jaw.jaw;
-    const bsp::CushionSegment& point = segment(geometry, prefix + ".point");
-    ASSERT_EQ(point.shape, bsp::CushionSegment::Shape::Arc) << prefix;
+    const bsp::NoseSegment& point = segment(geometry, prefix + ".point");
+    ASSERT_EQ(point.shape, bsp::NoseSegment::Shape::Arc) << prefix;
     EXPECT_EQ(point.radius, jaw.corner ? table.corner_pockets.jaw_radius : table.side_pockets.jaw_radius);
     EXPECT_NEAR(distanceToLine(point.centre, segment(geometry, jaw.rail)), point.radius, 1e-12) << prefix;
     EXPECT_NEAR(distanceToLine(point.centre, segment(geometry, prefix + ".facing")), point.radius, 1e-12) << prefix;
@@ -156,15 +156,15 @@ TEST(TableGeometry, EachJawsRoundingTouchesItsRailAndFacingAndTheOutlineIsUnbrok
   int openings = 0;
   for (std::size_t i = 0; i < geometry.cushions.size(); ++i)
   {
-    const bsp::CushionSegment& here = geometry.cushions[i];
-    const bsp::CushionSegment& next = geometry.cushions[(i + 1) % geometry.cushions.size()];
+    const bsp::NoseSegment& here = geometry.cushions[i];
+    const bsp::NoseSegment& next = geometry.cushions[(i + 1) % geometry.cushions.size()];
     if ((here.end - next.start).norm() > 1e-12)
     {
       ++openings;
       EXPECT_NE(here.id.find(".facing"), std::string::npos) << here.id;
       EXPECT_NE(next.id.find(".facing"), std::string::npos) << next.id;
     }
-    if (here.shape == bsp::CushionSegment::Shape::Line && here.id.rfind("rail.", 0) == 0)
+    if (here.shape == bsp::NoseSegment::Shape::Line && here.id.rfind("rail.", 0) == 0)
     {
       EXPECT_GT(cross(here.end - here.start, -here.start), 0.0) << here.id;  // the table's centre on the left
     }
@@ -172,12 +172,12 @@ TEST(TableGeometry, EachJawsRoundingTouchesItsRailAndFacingAndTheOutlineIsUnbrok
   EXPECT_EQ(openings, 6);
 }
 
-TEST(TableGeometry, RailsAndPocketsFollowTheTablesSize)
+TEST(TableOutline, RailsAndPocketsFollowTheTablesSize)
 {
   bsp::Table table;
   table.length = 92.0 * INCH;  // WPA's 8-ft table
   table.width = 46.0 * INCH;
-  const bsp::TableGeometry geometry = built(table);
+  const bsp::TableOutline geometry = built(table);
   const double x = 0.5 * table.length, y = 0.5 * table.width;
   for (const char* id : {"rail.bottom.left", "rail.bottom.right"})
   {
@@ -201,14 +201,14 @@ TEST(TableGeometry, RailsAndPocketsFollowTheTablesSize)
   EXPECT_NEAR(side->axis.y(), -1.0, 1e-15);
 }
 
-TEST(TableGeometry, ACaromTableIsFourRailsAndNoPockets)
+TEST(TableOutline, ACaromTableIsFourRailsAndNoPockets)
 {
   bsp::Table table;
   table.length = 2.84;  // UMB's match table
   table.width = 1.42;
   table.pocket_layout = bsp::PocketLayout::None;
   table.pockets.clear();
-  const bsp::TableGeometry geometry = built(table);
+  const bsp::TableOutline geometry = built(table);
   EXPECT_TRUE(geometry.pockets.empty());
   ASSERT_EQ(geometry.cushions.size(), 4u);
   double perimeter = 0.0;
@@ -220,15 +220,15 @@ TEST(TableGeometry, ACaromTableIsFourRailsAndNoPockets)
   EXPECT_NEAR(perimeter, 2.0 * (2.84 + 1.42), 1e-12);
   // A carom table that lists capture regions contradicts itself.
   table.pockets = bsp::sixPockets(2.84, 1.42);
-  const auto refused = bsp::tableGeometry(table);
+  const auto refused = bsp::tableOutline(table);
   ASSERT_FALSE(refused.ok());
   EXPECT_EQ(refused.error().field, "table.pockets");
 }
 
-TEST(TableGeometry, ABallFallsOnceItsCentrePassesTheShelf)
+TEST(TableOutline, ABallFallsOnceItsCentrePassesTheShelf)
 {
   const bsp::Table table;
-  const bsp::TableGeometry geometry = built(table);
+  const bsp::TableOutline geometry = built(table);
   for (const bsp::PocketOpening& pocket : geometry.pockets)
   {
     const bool corner = pocket.id.find("side") == std::string::npos;
@@ -240,10 +240,10 @@ TEST(TableGeometry, ABallFallsOnceItsCentrePassesTheShelf)
   }
 }
 
-TEST(TableGeometry, TheNearestPointOfARoundedJawIsOnItsArcOrAtAnEnd)
+TEST(TableOutline, TheNearestPointOfARoundedJawIsOnItsArcOrAtAnEnd)
 {
-  bsp::CushionSegment arc;
-  arc.shape = bsp::CushionSegment::Shape::Arc;
+  bsp::NoseSegment arc;
+  arc.shape = bsp::NoseSegment::Shape::Arc;
   arc.centre = {0, 0};
   arc.radius = 0.01;
   arc.start = {0.01, 0};
@@ -254,20 +254,20 @@ TEST(TableGeometry, TheNearestPointOfARoundedJawIsOnItsArcOrAtAnEnd)
   EXPECT_EQ(arc.closestPoint({1, 1}), arc.start);    // beyond the start
   EXPECT_EQ(arc.closestPoint({-1, -0.5}), arc.end);  // beyond the end
   EXPECT_NEAR(arc.length(), 0.005 * PI, 1e-15);
-  bsp::CushionSegment rail;
+  bsp::NoseSegment rail;
   rail.start = {0, 0};
   rail.end = {1, 0};
   EXPECT_EQ(rail.closestPoint({0.3, 0.2}), Vector2d(0.3, 0));
   EXPECT_EQ(rail.closestPoint({-2, 0.2}), rail.start);
 }
 
-TEST(TableGeometry, CutsThatCannotBeBuiltNameTheirField)
+TEST(TableOutline, CutsThatCannotBeBuiltNameTheirField)
 {
   const auto refused_for = [](const std::function<void(bsp::Table&)>& change)
   {
     bsp::Table table;
     change(table);
-    const auto geometry = bsp::tableGeometry(table);
+    const auto geometry = bsp::tableOutline(table);
     return geometry.ok() ? std::string("accepted") : geometry.error().field;
   };
   // A side mouth wider than the rail from the corner pocket's jaw.
