@@ -3,6 +3,9 @@
 #include "geometry_conversions.hpp"
 
 #include <Eigen/Geometry>
+#include <cmath>
+
+#include "billiard_shot_planner/motion/table_outline.hpp"
 
 namespace billiard_shot_planner
 {
@@ -193,21 +196,47 @@ void addTable(visualization_msgs::MarkerArray& array, const Table& table, const 
   cloth.color = rgba(0.05f, 0.35f, 0.15f);
   array.markers.push_back(cloth);
 
-  const double rail = 0.05;  // m, drawn width of a cushion
-  for (int i = 0; i < 4; ++i)
+  // The cushions as the table's outline lays them out: a block behind each straight nose (rails and jaw facings),
+  // a line along each rounded jaw point. A table the outline refuses was refused before it was drawn.
+  const auto outline = tableOutline(table);
+  if (!outline)
+    return;
+  const double rail = 0.05;  // m, drawn depth of a cushion behind its nose
+  int block_id = 0, point_id = 0;
+  for (const NoseSegment& segment : outline.value().cushions)
   {
-    Marker cushion = marker(frame, "cushions", i, Marker::CUBE);
-    const int axis = i / 2;
-    const double side = i % 2 == 0 ? -1.0 : 1.0;
-    const double half = 0.5 * (axis == 0 ? table.length : table.width);
-    cushion.pose.position.x = axis == 0 ? side * (half + 0.5 * rail) : 0.0;
-    cushion.pose.position.y = axis == 1 ? side * (half + 0.5 * rail) : 0.0;
-    cushion.pose.position.z = 0.5 * table.cushion_height;
-    cushion.scale.x = axis == 0 ? rail : table.length + 2 * rail;
-    cushion.scale.y = axis == 1 ? rail : table.width;
-    cushion.scale.z = table.cushion_height;
-    cushion.color = rgba(0.35f, 0.2f, 0.1f);
-    array.markers.push_back(cushion);
+    if (segment.shape == NoseSegment::Shape::Arc)
+    {
+      Marker point = marker(frame, "jaw_points", point_id++, Marker::LINE_STRIP);
+      point.scale.x = 0.004;
+      point.color = rgba(0.35f, 0.2f, 0.1f);
+      const Eigen::Vector2d from = segment.start - segment.centre;
+      for (int k = 0; k <= 8; ++k)
+      {
+        const Eigen::Vector2d at = segment.centre + Eigen::Rotation2Dd(segment.sweep * k / 8.0) * from;
+        point.points.push_back(toPoint(Eigen::Vector3d(at.x(), at.y(), table.cushion_height)));
+        point.colors.push_back(point.color);
+      }
+      array.markers.push_back(point);
+      continue;
+    }
+    const Eigen::Vector2d along = segment.end - segment.start;
+    const Eigen::Vector2d behind(along.y() / along.norm(), -along.x() / along.norm());  // the cloth is on the left
+    const Eigen::Vector2d middle = 0.5 * (segment.start + segment.end) + 0.5 * rail * behind;
+    Marker block = marker(frame, "cushions", block_id++, Marker::CUBE);
+    block.pose.position.x = middle.x();
+    block.pose.position.y = middle.y();
+    block.pose.position.z = 0.5 * table.cushion_height;
+    const Eigen::Quaterniond turn(Eigen::AngleAxisd(std::atan2(along.y(), along.x()), Eigen::Vector3d::UnitZ()));
+    block.pose.orientation.x = turn.x();
+    block.pose.orientation.y = turn.y();
+    block.pose.orientation.z = turn.z();
+    block.pose.orientation.w = turn.w();
+    block.scale.x = along.norm();
+    block.scale.y = rail;
+    block.scale.z = table.cushion_height;
+    block.color = rgba(0.35f, 0.2f, 0.1f);
+    array.markers.push_back(block);
   }
   for (std::size_t i = 0; i < table.pockets.size(); ++i)
   {

@@ -39,7 +39,7 @@ TEST(TrajectoryMarkers, DeleteAllFirstThenUniqueIdsPerNamespace)
     EXPECT_DOUBLE_EQ(m.lifetime.toSec(), 0.0);
   }
   for (const char* ns : {"trajectory", "ball_start", "ball_end", "velocity", "spin", "hit_point", "cue", "events",
-                         "table", "cushions", "pockets"})
+                         "table", "cushions", "jaw_points", "pockets"})
     EXPECT_EQ(ids.count(ns), 1u) << ns;
 }
 
@@ -146,8 +146,9 @@ TEST(TrajectoryMarkers, FrozenShotDrawsTheBallsOfTheStrike)
     EXPECT_TRUE(m.ns != "strike_contacts" && m.ns != "strike_velocity") << m.ns;
 }
 
-// The table alone, as the node draws it before its first answer: the cloth of the table's size, four cushions and a
-// disc per pocket, after a DELETEALL.
+// The table alone, as the node draws it before its first answer: the cloth of the table's size, a block behind each
+// straight nose of its outline (six rails between the pockets, two jaw facings per pocket), a line along each rounded
+// jaw point and a disc per capture region, after a DELETEALL; a carom table's four rails and nothing else.
 TEST(TrajectoryMarkers, TheTableAloneIsItsClothCushionsAndPockets)
 {
   bsp::Table table;
@@ -168,6 +169,22 @@ TEST(TrajectoryMarkers, TheTableAloneIsItsClothCushionsAndPockets)
     }
   }
   EXPECT_EQ(count["table"], 1);
-  EXPECT_EQ(count["cushions"], 4);
+  EXPECT_EQ(count["cushions"], 6 + 6 * 2);
+  EXPECT_EQ(count["jaw_points"], 6 * 2);
   EXPECT_EQ(count["pockets"], static_cast<int>(table.pockets.size()));
+  // Each block lies behind its nose, along it: the bottom rails' blocks below y = -width/2, turned along x.
+  for (const auto& m : array.markers)
+    if (m.ns == "cushions" && std::abs(m.pose.orientation.z) < 1e-12 && m.pose.position.y < 0.0)
+    {
+      EXPECT_NEAR(m.pose.position.y, -0.75 - 0.025, 1e-12);
+    }
+
+  table.pocket_layout = bsp::PocketLayout::None;
+  table.pockets.clear();
+  count.clear();
+  for (const auto& m : bsp::tableMarkers(table, "table").markers)
+    ++count[m.ns];
+  EXPECT_EQ(count["cushions"], 4);
+  EXPECT_EQ(count["jaw_points"], 0);
+  EXPECT_EQ(count["pockets"], 0);
 }
