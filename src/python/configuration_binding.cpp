@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "billiard_shot_planner/io/parameter_file.hpp"
+#include "billiard_shot_planner/motion/table_outline.hpp"
 #include "billiard_shot_planner/shot/configuration_fields.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
 #include "python_errors.hpp"
@@ -166,6 +167,49 @@ ShotConfiguration updated(const ShotConfiguration& configuration, const py::dict
   return changed;
 }
 
+py::tuple pair(const Eigen::Vector2d& v)
+{
+  return py::make_tuple(v.x(), v.y());
+}
+
+/// The table's outline (docs/tables.md) as plain values: cushions and pockets by id.
+py::dict outlineOf(const ShotConfiguration& configuration)
+{
+  const TableOutline outline = valueOf(tableOutline(configuration.table));
+  py::list cushions, pockets;
+  for (const NoseSegment& segment : outline.cushions)
+  {
+    py::dict s;
+    s["id"] = segment.id;
+    s["shape"] = segment.shape == NoseSegment::Shape::Arc ? "arc" : "line";
+    s["start"] = pair(segment.start);
+    s["end"] = pair(segment.end);
+    if (segment.shape == NoseSegment::Shape::Arc)
+    {
+      s["centre"] = pair(segment.centre);
+      s["radius"] = segment.radius;
+      s["sweep"] = segment.sweep;
+    }
+    cushions.append(s);
+  }
+  for (const PocketOpening& pocket : outline.pockets)
+  {
+    py::dict p;
+    p["id"] = pocket.id;
+    p["jaw_in"] = pair(pocket.jaw_in);
+    p["jaw_out"] = pair(pocket.jaw_out);
+    p["mouth"] = pocket.mouth();
+    p["axis"] = pair(pocket.axis);
+    p["drop_centre"] = pair(pocket.drop_centre);
+    p["drop_radius"] = pocket.drop_radius;
+    pockets.append(p);
+  }
+  py::dict result;
+  result["cushions"] = cushions;
+  result["pockets"] = pockets;
+  return result;
+}
+
 py::dict fieldsOf(ShotConfiguration configuration)
 {
   DictWriter writer;
@@ -256,6 +300,11 @@ impact_solve's "table_file".)")
       .def("__contains__",
            [](const ShotConfiguration& c, const std::string& name) { return fieldsOf(c).contains(name); })
       .def("names", &numericNames, "The numeric parameters' names, as the ROS node's parameters.")
+      .def("table_outline", &outlineOf,
+           R"(The table's cushions and pockets as its size and pockets' cut lay them out (docs/tables.md):
+{"cushions": [{"id", "shape" ("line" or "arc"), "start", "end", and for an arc "centre", "radius", "sweep"}],
+"pockets": [{"id", "jaw_in", "jaw_out", "mouth", "axis", "drop_centre", "drop_radius"}]}, in m and rad, the
+table frame.)")
       .def("choices", &choices, "Each choice and flag by name, with the values it takes.")
       .def("copy", [](const ShotConfiguration& c) { return c; })
       .def("__copy__", [](const ShotConfiguration& c) { return c; })

@@ -184,3 +184,20 @@ def test_a_file_that_is_no_parameter_file_is_an_error_not_a_crash(tmp_path):
         with pytest.raises(bsp.Error) as raised:
             bsp.Configuration.load(path)
         assert raised.value.field == "parameter_file", path
+
+
+def test_the_table_outline_names_its_cushions_and_pockets_and_follows_the_size():
+    """The 9-ft table's six pockets by id, their mouths the WPA's; a carom table's four rails and no pockets."""
+    config = bsp.Configuration()
+    outline = config.table_outline()
+    pockets = {p["id"]: p for p in outline["pockets"]}
+    assert set(pockets) == {"bottom_left", "bottom_side", "bottom_right", "top_right", "top_side", "top_left"}
+    inch = 0.0254
+    assert 4.5 * inch <= pockets["top_right"]["mouth"] <= 4.625 * inch
+    assert 5.0 * inch <= pockets["top_side"]["mouth"] <= 5.125 * inch
+    assert {s["shape"] for s in outline["cushions"]} == {"line", "arc"}
+    config.update({"table/length": 2.84, "table/width": 1.42, "table/pocket_layout": "none", "table/pockets": []})
+    carom = config.table_outline()
+    assert carom["pockets"] == []
+    assert [s["id"] for s in carom["cushions"]] == ["rail.bottom", "rail.right", "rail.top", "rail.left"]
+    assert carom["cushions"][0]["start"] == (-1.42, -0.71)
