@@ -1,7 +1,6 @@
 #include "billiard_shot_planner/motion/table.hpp"
 #include <algorithm>
 #include <cmath>
-#include "billiard_shot_planner/motion/table_outline.hpp"
 
 #include "billiard_shot_planner/core/validation.hpp"
 
@@ -34,6 +33,56 @@ Status validate(const PocketCut& cut, const std::string& field)
                      requirePositive(cut.drop_radius, field + ".drop_radius")});
 }
 
+namespace
+{
+constexpr double PI = 3.14159265358979323846;
+
+/// The cut of one kind of pocket against its own facings. `axis_to_rail`: the angle between the pocket's axis and its
+/// rails (45 deg at a corner, 90 at a side). Each facing leaves its rail at 180 deg − facing_angle and so closes in on
+/// the axis by `closing`; at the drop region's middle, `depth` behind the mouth, the facings stand
+/// mouth/2 − depth tan(closing) from the axis, and a jaw's rounding takes `tangent` of its facing's depth/cos(closing).
+Status validateFacings(const PocketCut& cut, double axis_to_rail, const std::string& field)
+{
+  const double cut_angle = cut.facing_angle * PI / 180.0;
+  const double closing = axis_to_rail - (PI - cut_angle);
+  const double depth = cut.shelf + cut.drop_radius;
+  if (!(0.5 * cut.mouth - depth * std::tan(closing) > 0.0))
+    return invalidArgument(field + ".facing_angle", "makes the pockets' facings meet before the slate's cut (at " +
+                                                        formatNumber(depth) + " m behind the mouth)");
+  if (!(cut.jaw_radius / std::tan(0.5 * cut_angle) < depth / std::cos(closing)))
+    return invalidArgument(field + ".jaw_radius", "is too large for the pockets' facings");
+  return {};
+}
+
+/// Whether the pockets' cuts fit the table: facings that stay apart, jaws that leave a rail between two pockets (a
+/// corner's jaw points stand mouth/sqrt(2) from the corner, a side's mouth/2 from the rail's middle; each rounding
+/// takes jaw_radius/tan(facing_angle/2) more of the rail).
+Status validatePocketFit(const Table& table, const std::string& field)
+{
+  if (table.pocket_layout == PocketLayout::None)
+  {
+    if (!table.pockets.empty())
+      return invalidArgument(field + ".pockets", "must be empty on a table without pockets (pocket_layout \"none\")");
+    return {};
+  }
+  const PocketCut &corner = table.corner_pockets, &side = table.side_pockets;
+  if (Status status = firstError({validateFacings(corner, 0.25 * PI, field + ".corner_pockets"),
+                                  validateFacings(side, 0.5 * PI, field + ".side_pockets")});
+      !status)
+    return status;
+  const double corner_jaw =
+      corner.mouth / std::sqrt(2.0) + corner.jaw_radius / std::tan(0.5 * corner.facing_angle * PI / 180.0);
+  const double side_jaw = 0.5 * side.mouth + side.jaw_radius / std::tan(0.5 * side.facing_angle * PI / 180.0);
+  if (!(0.5 * table.length - corner_jaw - side_jaw > 0.0))
+    return invalidArgument(field + ".side_pockets.mouth",
+                           "leaves no cushion on the long rails between the corner and side pockets' jaws");
+  if (!(table.width - 2.0 * corner_jaw > 0.0))
+    return invalidArgument(field + ".corner_pockets.mouth",
+                           "leaves no cushion on the short rails between the corner pockets' jaws");
+  return {};
+}
+}  // namespace
+
 Status validate(const Table& table, const std::string& field)
 {
   if (Status status =
@@ -53,10 +102,7 @@ Status validate(const Table& table, const std::string& field)
         !status)
       return status;
   }
-  // The cuts must also fit the table: jaws that leave a rail, facings that stay apart.
-  if (auto outline = tableOutline(table, field); !outline)
-    return outline.error();
-  return {};
+  return validatePocketFit(table, field);
 }
 
 Status validateCushionHeight(double cushion_height, double ball_radius, const std::string& field)

@@ -1,7 +1,6 @@
 #include "billiard_shot_planner/motion/table_outline.hpp"
 
 #include <Eigen/Geometry>
-#include "billiard_shot_planner/core/validation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -93,7 +92,7 @@ struct PocketLayoutParts
   Jaw in, out;
 };
 
-Expected<PocketLayoutParts> layPocket(const PocketPlace& place, const PocketCut& cut, const std::string& field)
+PocketLayoutParts layPocket(const PocketPlace& place, const PocketCut& cut)
 {
   const double cut_angle = cut.facing_angle * PI / 180.0;
   PocketLayoutParts parts;
@@ -117,17 +116,6 @@ Expected<PocketLayoutParts> layPocket(const PocketPlace& place, const PocketCut&
   const Eigen::Vector2d facing_out = rotated(-place.out, PI - cut_angle);
   const double depth = cut.shelf + cut.drop_radius;  // the facings reach the drop region's middle
   const double facing_length = depth / facing_in.dot(opening.axis);
-  // The facings' far ends must still lie on their own sides of the axis.
-  const Eigen::Vector2d middle = opening.mouthMiddle();
-  const double side_in = cross(opening.axis, opening.jaw_in - middle);
-  const double end_in = cross(opening.axis, opening.jaw_in + facing_length * facing_in - middle);
-  const double end_out = cross(opening.axis, opening.jaw_out + facing_length * facing_out - middle);
-  if (!(end_in * side_in > 0.0 && end_out * side_in < 0.0))
-    return invalidArgument(field + ".facing_angle",
-                           "makes the facings of pocket \"" + opening.id + "\" meet before the slate's cut");
-  const double tangent = cut.jaw_radius / std::tan(0.5 * cut_angle);
-  if (!(tangent < facing_length))
-    return invalidArgument(field + ".jaw_radius", "is too large for the facings of pocket \"" + opening.id + "\"");
   opening.drop_centre = opening.mouthMiddle() + depth * opening.axis;
   opening.drop_radius = cut.drop_radius;
   const std::string jaws = "pocket." + opening.id + ".jaw.";
@@ -196,29 +184,18 @@ const PocketOpening* TableOutline::pocket(const std::string& id) const
 
 Expected<TableOutline> tableOutline(const Table& table, const std::string& field)
 {
-  if (Status status =
-          firstError({requirePositive(table.length, field + ".length"), requirePositive(table.width, field + ".width"),
-                      validate(table.corner_pockets, field + ".corner_pockets"),
-                      validate(table.side_pockets, field + ".side_pockets")});
-      !status)
+  // The table's checks include the cuts' fit (validatePocketFit): what passes them lays out.
+  if (Status status = validate(table, field); !status)
     return status.error();
-  if (table.pocket_layout == PocketLayout::None && !table.pockets.empty())
-    return invalidArgument(field + ".pockets", "must be empty on a table without pockets (pocket_layout \"none\")");
   const double x = 0.5 * table.length, y = 0.5 * table.width;
   if (table.pocket_layout == PocketLayout::None)
     return caromGeometry(x, y);
 
   const std::vector<PocketPlace> places = sixPocketPlaces(x, y);
   std::vector<PocketLayoutParts> parts;
+  parts.reserve(places.size());
   for (const PocketPlace& place : places)
-  {
-    const bool corner = place.corner;
-    auto laid = layPocket(place, corner ? table.corner_pockets : table.side_pockets,
-                          field + (corner ? ".corner_pockets" : ".side_pockets"));
-    if (!laid)
-      return laid.error();
-    parts.push_back(laid.value());
-  }
+    parts.push_back(layPocket(place, place.corner ? table.corner_pockets : table.side_pockets));
   TableOutline outline;
   for (std::size_t k = 0; k < places.size(); ++k)
   {
@@ -226,15 +203,7 @@ Expected<TableOutline> tableOutline(const Table& table, const std::string& field
     const PocketLayoutParts& next = parts[(k + 1) % parts.size()];
     outline.pockets.push_back(here.opening);
     appendJaw(outline.cushions, here.out, false);
-    const Eigen::Vector2d rail_start = here.out.rail_end, rail_end = next.in.rail_end;
-    if (!((rail_end - rail_start).dot(places[k].out) > 0.0))
-    {
-      const bool between_corners = places[k].corner && places[(k + 1) % places.size()].corner;
-      return invalidArgument(
-          field + (between_corners ? ".corner_pockets.mouth" : ".side_pockets.mouth"),
-          "leaves no cushion on " + std::string(places[k].rail_after) + " between the pockets' jaws");
-    }
-    outline.cushions.push_back(line(places[k].rail_after, rail_start, rail_end));
+    outline.cushions.push_back(line(places[k].rail_after, here.out.rail_end, next.in.rail_end));
     appendJaw(outline.cushions, next.in, true);
   }
   // The walk began at the bottom-left pocket's jaw out; its jaw in, laid last, closes the outline there.

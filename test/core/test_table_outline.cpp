@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <functional>
+#include <random>
 #include <set>
 
 namespace bsp = billiard_shot_planner;
@@ -280,4 +281,67 @@ TEST(TableOutline, CutsThatCannotBeBuiltNameTheirField)
   EXPECT_EQ(refused_for([](bsp::Table& t) { t.corner_pockets.drop_radius = 0.0; }), "table.corner_pockets.drop_radius");
   EXPECT_EQ(refused_for([](bsp::Table& t) { t.side_pockets.mouth = std::nan(""); }), "table.side_pockets.mouth");
   EXPECT_EQ(refused_for([](bsp::Table& t) { t.side_pockets.jaw_radius = 0.0; }), "accepted");
+}
+
+// The closed-form fit that validate() checks against the outline it lets through: for random cuts, every accepted one
+// lays out rails of positive length and facings that end on their own sides of their pocket's axis; and at the
+// boundary where a side pocket's facings meet at the drop region's depth, a cut a hair inside is accepted and lays
+// out facings a hair apart, one a hair beyond is refused.
+TEST(TableOutline, EveryCutThatValidatesLaysOutAndTheBoundaryIsWhereTheFacingsMeet)
+{
+  std::mt19937 random(38);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int accepted = 0;
+  for (int draw = 0; draw < 2000; ++draw)
+  {
+    bsp::Table table;
+    for (bsp::PocketCut* cut : {&table.corner_pockets, &table.side_pockets})
+    {
+      cut->mouth = 0.05 + 1.2 * unit(random);
+      cut->facing_angle = 90.0 + 90.0 * unit(random);
+      cut->shelf = 0.1 * unit(random);
+      cut->jaw_radius = 0.05 * unit(random);
+      cut->drop_radius = 0.01 + 0.1 * unit(random);
+    }
+    if (!bsp::validate(table).ok())
+      continue;
+    ++accepted;
+    const bsp::TableOutline outline = built(table);
+    for (const bsp::NoseSegment& piece : outline.cushions)
+      if (piece.id.rfind("rail.", 0) == 0)
+      {
+        EXPECT_GT(piece.length(), 0.0) << piece.id;
+        EXPECT_GT(cross(piece.end - piece.start, -piece.start), 0.0) << piece.id;  // not turned back
+      }
+    for (const bsp::PocketOpening& pocket : outline.pockets)
+    {
+      const Vector2d middle = pocket.mouthMiddle();
+      const double side_in = cross(pocket.axis, pocket.jaw_in - middle);
+      for (const bsp::NoseSegment& piece : outline.cushions)
+        if (piece.id.rfind("pocket." + pocket.id + ".", 0) == 0 && piece.id.find(".facing") != std::string::npos)
+        {
+          const Vector2d deep =
+              (piece.start - middle).dot(pocket.axis) > (piece.end - middle).dot(pocket.axis) ? piece.start : piece.end;
+          const Vector2d shallow = deep == piece.start ? piece.end : piece.start;
+          EXPECT_GT(cross(pocket.axis, deep - middle) * cross(pocket.axis, shallow - middle), 0.0) << piece.id;
+        }
+      EXPECT_NE(side_in, 0.0);
+    }
+  }
+  EXPECT_GT(accepted, 100);
+
+  bsp::Table table;
+  const bsp::PocketCut& side = table.side_pockets;
+  const double depth = side.shelf + side.drop_radius;
+  const double meeting = 90.0 + std::atan(0.5 * side.mouth / depth) * 180.0 / PI;
+  table.side_pockets.facing_angle = meeting - 1e-6;
+  const bsp::TableOutline inside = built(table);
+  const bsp::NoseSegment& left = segment(inside, "pocket.bottom_side.jaw.left.facing");
+  const bsp::NoseSegment& right = segment(inside, "pocket.bottom_side.jaw.right.facing");
+  EXPECT_GT(right.start.x() - left.end.x(), 0.0);
+  EXPECT_LT(right.start.x() - left.end.x(), 1e-6);
+  table.side_pockets.facing_angle = meeting + 1e-6;
+  const auto beyond = bsp::tableOutline(table);
+  ASSERT_FALSE(beyond.ok());
+  EXPECT_EQ(beyond.error().field, "table.side_pockets.facing_angle");
 }

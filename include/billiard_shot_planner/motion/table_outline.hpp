@@ -63,9 +63,9 @@ struct TableOutline
 
 /// Lays out the table's cushions and pockets from its size and its pockets' cuts (Table::pocket_layout,
 /// corner_pockets, side_pockets): the rails follow the length and width, each pocket's jaws are cut at its facing
-/// angle with their points rounded, and its drop region lies behind the shelf. Errors: InvalidArgument naming the
-/// cut's field when the table does not validate, when two pockets' jaws leave no rail between them, when a jaw's
-/// rounding does not fit on its rail or facing, or when a pocket's facings meet before the slate's cut.
+/// angle with their points rounded, and its drop region lies behind the shelf. Errors: validate(table)'s, which
+/// include a cut that does not fit (two pockets' jaws leaving no rail between them, a rounding longer than its
+/// facing, facings that meet before the slate's cut), naming the cut's field.
 Expected<TableOutline> tableOutline(const Table& table, const std::string& field = "table");
 
 }  // namespace billiard_shot_planner
