@@ -22,12 +22,6 @@ constexpr double TOUCH_DOWN_SPEED = 1e-9;
 /// the one before.
 constexpr double SUSTAINED_CONTACT_SPEED = 1e-6;
 
-/// Horizontal speed of the ball's centre towards cushion `rail` (0: −x, 1: +x, 2: −y, 3: +y).
-double speedTowards(int rail, const BallState& state)
-{
-  const int axis = rail / 2;
-  return rail % 2 == 1 ? state.velocity(axis) : -state.velocity(axis);
-}
 }  // namespace
 
 Deadline deadlineAfter(double seconds)
@@ -69,7 +63,7 @@ Status checkStart(const BallState& start, const BallProperties& ball, const Tabl
 
 BallMover::BallMover(const BallProperties& ball, const Table& table, const MotionParameters& parameters,
                      const Deadline& deadline)
-    : ball_(ball), table_(table), p_(parameters), deadline_(deadline)
+    : ball_(ball), table_(table), noses_(railNoses(table)), p_(parameters), deadline_(deadline)
 {
 }
 
@@ -214,10 +208,11 @@ Expected<bool> BallMover::hitCushion(int rail, NoseContact contact, BallState& s
   // Touching the cloth, the ball meets the nose and the cloth at once; a cloth contact that separates from the
   // start takes part only if the impact brings it back.
   const bool on_cloth = state.position.z() <= ball_.radius * (1.0 + 1e-9);
-  const Eigen::Vector3d normal = cushionNormal(rail, table_, state.position);
+  const Nose& nose = noses_[rail];
+  const Eigen::Vector3d normal = cushionNormal(nose, table_, state.position);
   const double approach = -state.velocity.dot(normal);
   if (contact == NoseContact::Pressed ||
-      pressedAgainst(rail, on_cloth, on_cloth ? speedTowards(rail, state) : approach))
+      pressedAgainst(rail, on_cloth, on_cloth ? nose.outwardPart(state.velocity) : approach))
   {
     trajectory_.events.push_back({MotionEventType::CushionContact, t, state, rail});
     trajectory_.outcome = MotionOutcome::AgainstCushion;
@@ -237,7 +232,7 @@ Expected<bool> BallMover::hitCushion(int rail, NoseContact contact, BallState& s
   if (p_.planar)
     state.velocity.z() = 0.0;
   trajectory_.events.push_back({MotionEventType::CushionHit, t, state, rail});
-  last_hit_ = {rail, on_cloth, on_cloth ? -speedTowards(rail, state) : state.velocity.dot(normal)};
+  last_hit_ = {rail, on_cloth, on_cloth ? -nose.outwardPart(state.velocity) : state.velocity.dot(normal)};
   return false;
 }
 

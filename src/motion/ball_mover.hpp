@@ -95,6 +95,7 @@ private:
 
   const BallProperties& ball_;
   const Table& table_;
+  std::array<Nose, 4> noses_;  ///< the rails', numbered as the events' cushions
   const MotionParameters& p_;
   const Deadline& deadline_;
   BallTrajectory trajectory_;

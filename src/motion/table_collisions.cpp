@@ -20,7 +20,7 @@ BallCollision collisionOf(const std::vector<BallState>& touching, const BallProp
     collision.balls.push_back({state.position.head<2>(), state.velocity, state.angular_velocity,
                                std::max(state.position.z() - ball.radius, 0.0)});
     for (int rail : touchedCushions(state.position, table, ball.radius))
-      collision.cushions.push_back({i, cushionNormal(rail, table, state.position)});
+      collision.cushions.push_back({i, cushionNormal(railNoses(table)[rail], table, state.position)});
   }
   return collision;
 }

@@ -66,21 +66,6 @@ constexpr int NOSE_SAMPLES = 32;
 /// resolution of the events.
 constexpr int RETURN_SAMPLES = 48;
 
-/// One cushion nose: the line `cushion_height` above the cloth along the edge of the playing surface, at
-/// side · x(axis) = edge.
-struct Nose
-{
-  int axis;
-  double side;
-  double edge;
-};
-
-Nose noseOf(int rail, const Table& table)
-{
-  const int axis = rail / 2;
-  return {axis, rail % 2 == 0 ? -1.0 : 1.0, 0.5 * (axis == 0 ? table.length : table.width)};
-}
-
 /// The ball's motion relative to a nose at an instant, along the contact normal.
 struct Approach
 {
@@ -113,11 +98,11 @@ struct NoseHit
 /// touches it moves away falls through zero and is no contact.
 std::optional<NoseHit> onClothContact(const MotionSegment& segment, const Nose& nose, double reach, double horizon)
 {
-  // g(τ) = side·x(τ) − (edge − reach), the overlap measured horizontally: rises through zero when the ball reaches
-  // the nose moving towards it.
-  const double c = nose.side * segment.start.position(nose.axis) - (nose.edge - reach);
-  const double b = nose.side * segment.start.velocity(nose.axis);
-  const double a = nose.side * segment.acceleration(nose.axis);
+  // g(τ) = outward·x(τ) − (edge − reach), the overlap measured horizontally: rises through zero when the ball
+  // reaches the nose moving towards it.
+  const double c = nose.outwardPart(segment.start.position) - (nose.edge - reach);
+  const double b = nose.outwardPart(segment.start.velocity);
+  const double a = nose.outwardPart(segment.acceleration);
   if (c >= -CONTACT_DISTANCE)
     if (const auto contact = contactOf({c, b, a}, horizon))
       return NoseHit{0.0, *contact};
@@ -134,9 +119,9 @@ std::optional<NoseHit> onClothContact(const MotionSegment& segment, const Nose& 
 Approach airborneApproach(const MotionSegment& segment, const Nose& nose, const Table& table, double radius, double tau)
 {
   const BallState s = segment.at(segment.start_time + tau);
-  const Eigen::Vector2d p(nose.edge - nose.side * s.position(nose.axis), s.position.z() - table.cushion_height);
-  const Eigen::Vector2d dp(-nose.side * s.velocity(nose.axis), s.velocity.z());
-  const Eigen::Vector2d ddp(-nose.side * segment.acceleration(nose.axis), segment.acceleration.z());
+  const Eigen::Vector2d p(nose.edge - nose.outwardPart(s.position), s.position.z() - table.cushion_height);
+  const Eigen::Vector2d dp(-nose.outwardPart(s.velocity), s.velocity.z());
+  const Eigen::Vector2d ddp(-nose.outwardPart(segment.acceleration), segment.acceleration.z());
   const double d = p.norm();
   const Eigen::Vector2d n = p / d;
   const double separating = n.dot(dp);
@@ -155,15 +140,15 @@ Approach airborneApproach(const MotionSegment& segment, const Nose& nose, const 
 std::optional<NoseHit> airborneContact(const MotionSegment& segment, const Nose& nose, const Table& table,
                                        double radius, double horizon)
 {
-  const double c = nose.side * segment.start.position(nose.axis) - nose.edge;
-  const double b = nose.side * segment.start.velocity(nose.axis);
-  const double a = nose.side * segment.acceleration(nose.axis);
+  const double c = nose.outwardPart(segment.start.position) - nose.edge;
+  const double b = nose.outwardPart(segment.start.velocity);
+  const double a = nose.outwardPart(segment.acceleration);
   const auto passes = c >= 0.0 ? std::optional<double>(0.0) : firstRisingRoot(c, b, a, 0.0, horizon);
   const double end = passes ? *passes : horizon;
   auto overlap = [&](double tau)
   {
     const Eigen::Vector3d centre = segment.at(segment.start_time + tau).position;
-    const double u = nose.edge - nose.side * centre(nose.axis), w = centre.z() - table.cushion_height;
+    const double u = nose.edge - nose.outwardPart(centre), w = centre.z() - table.cushion_height;
     return radius * radius - u * u - w * w;
   };
   auto contact_at = [&](double tau)
@@ -213,11 +198,17 @@ std::optional<NoseHit> airborneContact(const MotionSegment& segment, const Nose&
 }
 }  // namespace
 
-Eigen::Vector3d cushionNormal(int rail, const Table& table, const Eigen::Vector3d& centre)
+std::array<Nose, 4> railNoses(const Table& table)
 {
-  const Nose nose = noseOf(rail, table);
-  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
-  normal(nose.axis) = centre(nose.axis) - nose.side * nose.edge;  // from the nose line, into the table
+  const double x = 0.5 * table.length, y = 0.5 * table.width;
+  return {{{{-1.0, 0.0}, x}, {{1.0, 0.0}, x}, {{0.0, -1.0}, y}, {{0.0, 1.0}, y}}};
+}
+
+Eigen::Vector3d cushionNormal(const Nose& nose, const Table& table, const Eigen::Vector3d& centre)
+{
+  Eigen::Vector3d normal;
+  // From the nose line, into the table; adding +0 leaves a rail's normal exactly along its axis (no −0 across it).
+  normal.head<2>() = (nose.outwardPart(centre) - nose.edge) * nose.outward + Eigen::Vector2d::Zero();
   normal.z() = centre.z() - table.cushion_height;
   return normal.normalized();
 }
@@ -225,10 +216,10 @@ Eigen::Vector3d cushionNormal(int rail, const Table& table, const Eigen::Vector3
 std::vector<int> touchedCushions(const Eigen::Vector3d& centre, const Table& table, double radius)
 {
   std::vector<int> rails;
+  const std::array<Nose, 4> noses = railNoses(table);
   for (int rail = 0; rail < 4; ++rail)
   {
-    const Nose nose = noseOf(rail, table);
-    const double across = nose.edge - nose.side * centre(nose.axis);  // from the nose line into the table
+    const double across = noses[rail].edge - noses[rail].outwardPart(centre);  // from the nose line into the table
     if (std::hypot(across, centre.z() - table.cushion_height) <= radius + CONTACT_DISTANCE)
       rails.push_back(rail);
   }
@@ -240,9 +231,10 @@ std::optional<CushionCrossing> firstCushionHit(const MotionSegment& segment, con
 {
   const double reach = cushionReach(table, radius);
   std::optional<CushionCrossing> best;
+  const std::array<Nose, 4> noses = railNoses(table);
   for (int rail = 0; rail < 4; ++rail)
   {
-    const Nose nose = noseOf(rail, table);
+    const Nose& nose = noses[rail];
     const auto hit = segment.phase == MotionPhase::Airborne ? airborneContact(segment, nose, table, radius, horizon)
                                                             : onClothContact(segment, nose, reach, horizon);
     if (hit && (!best || hit->time < best->time))

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -14,11 +15,25 @@ namespace detail
 /// (scenarios/ball_collision.hpp), also the tolerance of a start position against the cushions.
 constexpr double CONTACT_DISTANCE = TOUCHING_GAP;
 
-/// Unit normal of the cushion contact (from the nose towards the ball's centre) for cushion `rail` (0: −x, 1: +x,
-/// 2: −y, 3: +y), with the ball's centre at `centre` (table frame) touching the nose.
-Eigen::Vector3d cushionNormal(int rail, const Table& table, const Eigen::Vector3d& centre);
+/// A rail's nose seen from above: the line outward·x = edge at the cushion's height, `outward` being the unit
+/// horizontal normal out of the table.
+struct Nose
+{
+  Eigen::Vector2d outward;
+  double edge;
 
-/// The cushions (0: −x, 1: +x, 2: −y, 3: +y) whose nose a ball with its centre at `centre` touches, to
+  /// How far `v` (a position's or a velocity's horizontal part) points out of the table, across the nose.
+  double outwardPart(const Eigen::Vector3d& v) const { return outward.x() * v.x() + outward.y() * v.y(); }
+};
+
+/// The rails' noses, numbered by their place here: 0 at −x, 1 at +x, 2 at −y, 3 at +y.
+std::array<Nose, 4> railNoses(const Table& table);
+
+/// Unit normal of the contact with `nose` (from the nose towards the ball's centre), with the ball's centre at
+/// `centre` (table frame) touching it.
+Eigen::Vector3d cushionNormal(const Nose& nose, const Table& table, const Eigen::Vector3d& centre);
+
+/// The rails (their numbers in railNoses) whose nose a ball with its centre at `centre` touches, to
 /// CONTACT_DISTANCE: its centre is R from the nose line, on the cloth or in the air.
 std::vector<int> touchedCushions(const Eigen::Vector3d& centre, const Table& table, double radius);
 

@@ -23,7 +23,8 @@ void addBall(StrikeBodies& s, const TableBall& ball, std::size_t index, const Ba
       {ball.state.position.head<2>(), ball.state.velocity, ball.state.angular_velocity, 0.0, ball.id});
   const Eigen::Vector3d centre(ball.state.position.x(), ball.state.position.y(), properties.radius);
   for (int rail : detail::touchedCushions(centre, table, properties.radius))
-    s.bodies.cushions.push_back({k, detail::cushionNormal(rail, table, centre), "cushion" + std::to_string(rail)});
+    s.bodies.cushions.push_back(
+        {k, detail::cushionNormal(detail::railNoses(table)[rail], table, centre), "cushion" + std::to_string(rail)});
 }
 }  // namespace
 

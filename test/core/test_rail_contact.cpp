@@ -258,7 +258,8 @@ TEST(RailContact, RandomBallsTouchingARailNeverCrossIt)
     }
     // Into or away from the nose along the contact normal: a hop under a nose above the centre moves into it.
     const Eigen::Vector3d v_start = p.planar ? Eigen::Vector3d(v.x(), v.y(), 0.0) : v;
-    const double approach = -v_start.dot(bsp::detail::cushionNormal(rail, table, start.position));
+    const double approach =
+        -v_start.dot(bsp::detail::cushionNormal(bsp::detail::railNoses(table)[rail], table, start.position));
     const bool met_at_once = t.events.size() > 1 && t.events[1].time == 0.0 && t.events[1].cushion == rail &&
                              (t.events[1].type == Type::CushionHit || t.events[1].type == Type::CushionContact);
     if (approach > 1e-6)
