@@ -4,6 +4,7 @@
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 
+#include "ball_contact_time.hpp"
 #include "phase_dynamics.hpp"
 
 namespace billiard_shot_planner
@@ -243,32 +244,32 @@ std::optional<CushionCrossing> firstCushionHit(const MotionSegment& segment, con
   return best;
 }
 
+std::optional<double> firstCircleEntry(const MotionSegment& segment, const Eigen::Vector2d& centre, double radius,
+                                       double horizon)
+{
+  Eigen::Vector3d from_centre = segment.start.position;
+  from_centre.head<2>() -= centre;
+  from_centre.z() = 0.0;
+  if (!(from_centre.norm() > radius))
+    return 0.0;
+  // The centre's motion relative to the region's is that of a ball relative to another at rest, in the plane: the
+  // contact search isolates the roots of the quartic |d|² − radius² exactly.
+  const Eigen::Vector3d velocity(segment.start.velocity.x(), segment.start.velocity.y(), 0.0);
+  const Eigen::Vector3d acceleration(segment.acceleration.x(), segment.acceleration.y(), 0.0);
+  return earliestBallContact(from_centre, velocity, acceleration, radius, horizon);
+}
+
 std::optional<Crossing> firstPocketEntry(const MotionSegment& segment, const Table& table, double horizon)
 {
   std::optional<Crossing> best;
-  const double speed = segment.start.velocity.head<2>().norm() + segment.acceleration.head<2>().norm() * horizon;
   for (std::size_t i = 0; i < table.pockets.size(); ++i)
   {
     const Pocket& pocket = table.pockets[i];
-    // Distance to the capture circle, sampled finely enough (a quarter radius of travel) to bracket an entry.
-    auto outside = [&](double tau)
-    { return (segment.at(segment.start_time + tau).position.head<2>() - pocket.centre).norm() - pocket.radius; };
-    const double end = best ? best->time : horizon;
-    const int samples = std::clamp(static_cast<int>(std::ceil(speed * end / (0.25 * pocket.radius))), 4, 100000);
-    double a = 0.0, fa = outside(0.0);
-    if (fa <= 0.0)
+    const auto entry = firstCircleEntry(segment, pocket.centre, pocket.radius, best ? best->time : horizon);
+    if (entry && *entry == 0.0)
       return Crossing{0.0, static_cast<int>(i)};
-    for (int k = 1; k <= samples; ++k)
-    {
-      const double b = end * k / samples, fb = outside(b);
-      if (fb <= 0.0)
-      {
-        best = Crossing{locateEvent(outside, a, b, fa, fb), static_cast<int>(i)};
-        break;
-      }
-      a = b;
-      fa = fb;
-    }
+    if (entry)
+      best = Crossing{*entry, static_cast<int>(i)};
   }
   return best;
 }

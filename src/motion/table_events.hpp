@@ -65,6 +65,13 @@ struct Crossing
   int index;    ///< the pocket
 };
 
+/// The first time in [0, horizon] at which the ball's centre, moving along `segment`, comes within `radius` of
+/// `centre` (table plane): 0 if it starts there, none if it does not come. Exact for the segment's quadratic path, by
+/// the balls' contact search (earliestBallContact): its roots are isolated, not sampled, and a path that only grazes
+/// the region's edge to within TOUCHING_GAP enters it at its closest approach.
+std::optional<double> firstCircleEntry(const MotionSegment& segment, const Eigen::Vector2d& centre, double radius,
+                                       double horizon);
+
 /// The first time in [0, horizon] at which the ball's centre enters a pocket's capture region.
 std::optional<Crossing> firstPocketEntry(const MotionSegment& segment, const Table& table, double horizon);
 
