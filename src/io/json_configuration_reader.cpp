@@ -92,8 +92,7 @@ public:
     const auto [place, node] = find(path);
     if (!node)
     {
-      if (table.length != base_table_.length || table.width != base_table_.width ||
-          table.pocket_layout != base_table_.pocket_layout)
+      if (!sameDefaultPockets(table, base_table_))
         pockets = defaultPockets(table);
       return;
     }

@@ -70,8 +70,7 @@ void YamlConfigurationReader::pockets(const std::string& path, std::vector<Pocke
   const YAML::Node node = place ? find(*place) : YAML::Node(YAML::NodeType::Undefined);
   if (!node)
   {
-    if (table.length != base_table_.length || table.width != base_table_.width ||
-        table.pocket_layout != base_table_.pocket_layout)
+    if (!sameDefaultPockets(table, base_table_))
       pockets = defaultPockets(table);
     return;
   }

@@ -17,6 +17,11 @@ std::vector<Pocket> defaultPockets(const Table& table)
   return table.pocket_layout == PocketLayout::None ? std::vector<Pocket>{} : sixPockets(table.length, table.width);
 }
 
+bool sameDefaultPockets(const Table& a, const Table& b)
+{
+  return a.length == b.length && a.width == b.width && a.pocket_layout == b.pocket_layout;
+}
+
 double cushionReach(const Table& table, double radius)
 {
   const double sin_theta = std::clamp((table.cushion_height - radius) / radius, -1.0, 1.0);
@@ -35,16 +40,14 @@ Status validate(const PocketCut& cut, const std::string& field)
 
 namespace
 {
-constexpr double PI = 3.14159265358979323846;
-
 /// The cut of one kind of pocket against its own facings. `axis_to_rail`: the angle between the pocket's axis and its
 /// rails (45 deg at a corner, 90 at a side). Each facing leaves its rail at 180 deg − facing_angle and so closes in on
 /// the axis by `closing`; at the drop region's middle, `depth` behind the mouth, the facings stand
 /// mouth/2 − depth tan(closing) from the axis, and a jaw's rounding takes `tangent` of its facing's depth/cos(closing).
 Status validateFacings(const PocketCut& cut, double axis_to_rail, const std::string& field)
 {
-  const double cut_angle = cut.facing_angle * PI / 180.0;
-  const double closing = axis_to_rail - (PI - cut_angle);
+  const double cut_angle = cut.cutAngle();
+  const double closing = axis_to_rail - (M_PI - cut_angle);
   const double depth = cut.shelf + cut.drop_radius;
   if (!(0.5 * cut.mouth - depth * std::tan(closing) > 0.0))
     return invalidArgument(field + ".facing_angle", "makes the pockets' facings meet before the slate's cut (at " +
@@ -66,13 +69,12 @@ Status validatePocketFit(const Table& table, const std::string& field)
     return {};
   }
   const PocketCut &corner = table.corner_pockets, &side = table.side_pockets;
-  if (Status status = firstError({validateFacings(corner, 0.25 * PI, field + ".corner_pockets"),
-                                  validateFacings(side, 0.5 * PI, field + ".side_pockets")});
+  if (Status status = firstError({validateFacings(corner, 0.25 * M_PI, field + ".corner_pockets"),
+                                  validateFacings(side, 0.5 * M_PI, field + ".side_pockets")});
       !status)
     return status;
-  const double corner_jaw =
-      corner.mouth / std::sqrt(2.0) + corner.jaw_radius / std::tan(0.5 * corner.facing_angle * PI / 180.0);
-  const double side_jaw = 0.5 * side.mouth + side.jaw_radius / std::tan(0.5 * side.facing_angle * PI / 180.0);
+  const double corner_jaw = corner.mouth / std::sqrt(2.0) + corner.jaw_radius / std::tan(0.5 * corner.cutAngle());
+  const double side_jaw = 0.5 * side.mouth + side.jaw_radius / std::tan(0.5 * side.cutAngle());
   if (!(0.5 * table.length - corner_jaw - side_jaw > 0.0))
     return invalidArgument(field + ".side_pockets.mouth",
                            "leaves no cushion on the long rails between the corner and side pockets' jaws");

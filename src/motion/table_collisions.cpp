@@ -14,13 +14,14 @@ BallCollision collisionOf(const std::vector<BallState>& touching, const BallProp
                           const BallContactSettings& contact)
 {
   BallCollision collision = collisionSettings(ball, table, contact);
+  const std::array<Nose, 4> noses = railNoses(table);
   for (std::size_t i = 0; i < touching.size(); ++i)
   {
     const BallState& state = touching[i];
     collision.balls.push_back({state.position.head<2>(), state.velocity, state.angular_velocity,
                                std::max(state.position.z() - ball.radius, 0.0)});
     for (int rail : touchedCushions(state.position, table, ball.radius))
-      collision.cushions.push_back({i, cushionNormal(railNoses(table)[rail], table, state.position)});
+      collision.cushions.push_back({i, cushionNormal(noses[rail], table, state.position)});
   }
   return collision;
 }

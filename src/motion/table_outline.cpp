@@ -9,8 +9,6 @@ namespace billiard_shot_planner
 {
 namespace
 {
-constexpr double PI = 3.14159265358979323846;
-
 Eigen::Vector2d rotated(const Eigen::Vector2d& v, double angle)
 {
   return Eigen::Rotation2Dd(angle) * v;
@@ -82,7 +80,7 @@ Jaw jawAt(const std::string& id, const Eigen::Vector2d& tip, const Eigen::Vector
   jaw.point.centre = tip + (facing - rail).normalized() * (radius / std::sin(0.5 * cut_angle));
   jaw.point.start = entering ? on_rail : on_facing;
   jaw.point.end = entering ? on_facing : on_rail;
-  jaw.point.sweep = -(PI - cut_angle);  // the outline turns right, around the cushion, by the cut's supplement
+  jaw.point.sweep = -(M_PI - cut_angle);  // the outline turns right, around the cushion, by the cut's supplement
   return jaw;
 }
 
@@ -94,7 +92,7 @@ struct PocketLayoutParts
 
 PocketLayoutParts layPocket(const PocketPlace& place, const PocketCut& cut)
 {
-  const double cut_angle = cut.facing_angle * PI / 180.0;
+  const double cut_angle = cut.cutAngle();
   PocketLayoutParts parts;
   PocketOpening& opening = parts.opening;
   opening.id = place.id;
@@ -109,11 +107,11 @@ PocketLayoutParts layPocket(const PocketPlace& place, const PocketCut& cut)
   {
     opening.jaw_in = place.place - 0.5 * cut.mouth * place.in;
     opening.jaw_out = place.place + 0.5 * cut.mouth * place.in;
-    opening.axis = -rotated(place.in, 0.5 * PI);
+    opening.axis = -rotated(place.in, 0.5 * M_PI);
   }
   // Each facing leaves its rail turned into the cushion by the cut's supplement.
-  const Eigen::Vector2d facing_in = rotated(place.in, -(PI - cut_angle));
-  const Eigen::Vector2d facing_out = rotated(-place.out, PI - cut_angle);
+  const Eigen::Vector2d facing_in = rotated(place.in, -(M_PI - cut_angle));
+  const Eigen::Vector2d facing_out = rotated(-place.out, M_PI - cut_angle);
   const double depth = cut.shelf + cut.drop_radius;  // the facings reach the drop region's middle
   const double facing_length = depth / facing_in.dot(opening.axis);
   opening.drop_centre = opening.mouthMiddle() + depth * opening.axis;

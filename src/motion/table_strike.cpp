@@ -22,9 +22,10 @@ void addBall(StrikeBodies& s, const TableBall& ball, std::size_t index, const Ba
   s.bodies.balls.push_back(
       {ball.state.position.head<2>(), ball.state.velocity, ball.state.angular_velocity, 0.0, ball.id});
   const Eigen::Vector3d centre(ball.state.position.x(), ball.state.position.y(), properties.radius);
+  const std::array<detail::Nose, 4> noses = detail::railNoses(table);
   for (int rail : detail::touchedCushions(centre, table, properties.radius))
     s.bodies.cushions.push_back(
-        {k, detail::cushionNormal(detail::railNoses(table)[rail], table, centre), "cushion" + std::to_string(rail)});
+        {k, detail::cushionNormal(noses[rail], table, centre), "cushion" + std::to_string(rail)});
 }
 }  // namespace
 

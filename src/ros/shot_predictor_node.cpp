@@ -153,9 +153,11 @@ ShotPredictorNode::ShotPredictorNode(ros::NodeHandle& node, ros::NodeHandle& pri
   marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("trajectory_markers", 1, true);
   marker_publisher_.publish(tableMarkers(settings_.shot.table, settings_.target_frame));  // rviz has a table at once
   // Latched: the table's size, cushions and pockets do not change while the node runs (tuning leaves them).
+  // The settings were validated, the outline with them: it lays out.
+  table_message_ = tableMessage(tableOutline(settings_.shot.table).value(), settings_.shot.table,
+                                settings_.target_frame, ros::Time::now());
   table_publisher_ = private_node.advertise<TableGeometry>("table", 1, true);
-  table_publisher_.publish(tableMessage(tableOutline(settings_.shot.table).value(), settings_.shot.table,
-                                        settings_.target_frame, ros::Time::now()));
+  table_publisher_.publish(table_message_);
   // The tuning server starts from the loaded parameters, not from the .cfg defaults.
   tuning_server_ = std::make_unique<dynamic_reconfigure::Server<ShotPredictorConfig>>(
       tuning_mutex_, ros::NodeHandle(private_node, "tuning"));
@@ -498,13 +500,7 @@ bool ShotPredictorNode::describeConfiguration(GetConfiguration::Request& /*reque
 
 bool ShotPredictorNode::describeTable(GetTable::Request& /*request*/, GetTable::Response& response)
 {
-  Table table;
-  {
-    std::lock_guard<std::mutex> lock(configuration_mutex_);
-    table = settings_.shot.table;
-  }
-  // The settings were validated, the outline with them: it lays out.
-  response.table = tableMessage(tableOutline(table).value(), table, settings_.target_frame, ros::Time::now());
+  response.table = table_message_;
   response.success = true;
   response.message = "ok";
   response.error_code = errorCode(ErrorCode::SUCCESS);

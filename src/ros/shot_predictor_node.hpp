@@ -5,6 +5,7 @@
 #include <billiard_shot_planner/PlayerStroke.h>
 #include <billiard_shot_planner/PredictShot.h>
 #include <billiard_shot_planner/ShotPredictorConfig.h>
+#include <billiard_shot_planner/TableGeometry.h>
 #include <billiard_shot_planner/TableState.h>
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <dynamic_reconfigure/server.h>
@@ -98,6 +99,7 @@ private:
   ros::Publisher prediction_publisher_;
   ros::Publisher marker_publisher_;
   ros::Publisher table_publisher_;
+  TableGeometry table_message_;  ///< laid out once: tuning leaves the table's size and pockets
   ros::ServiceServer service_;
   ros::ServiceServer configuration_service_;
   ros::ServiceServer table_service_;

@@ -1,16 +1,14 @@
 #include "table_message.hpp"
 
+#include "geometry_conversions.hpp"
+
 namespace billiard_shot_planner
 {
 namespace
 {
 geometry_msgs::Point pointAt(const Eigen::Vector2d& p, double z)
 {
-  geometry_msgs::Point point;
-  point.x = p.x();
-  point.y = p.y();
-  point.z = z;
-  return point;
+  return toPoint(Eigen::Vector3d(p.x(), p.y(), z));
 }
 
 CushionSegment segmentMessage(const NoseSegment& segment, double height)
@@ -32,8 +30,7 @@ TablePocket pocketMessage(const PocketOpening& pocket)
   message.id = pocket.id;
   message.jaw_in = pointAt(pocket.jaw_in, 0.0);
   message.jaw_out = pointAt(pocket.jaw_out, 0.0);
-  message.axis.x = pocket.axis.x();
-  message.axis.y = pocket.axis.y();
+  message.axis = toVector3(Eigen::Vector3d(pocket.axis.x(), pocket.axis.y(), 0.0));
   message.drop_centre = pointAt(pocket.drop_centre, 0.0);
   message.drop_radius = pocket.drop_radius;
   return message;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,9 @@ struct PocketCut
   double shelf = 0.0;         ///< m, from the middle of the mouth, along the pocket's axis, to the slate's cut
   double jaw_radius = 0.0;    ///< m, the rounding of each jaw point (0: a sharp point)
   double drop_radius = 0.0;   ///< m, the slate's cut as a circle: a ball whose centre passes over it falls
+
+  /// The facing angle in radians.
+  double cutAngle() const { return facing_angle * M_PI / 180.0; }
 };
 
 /// Which pockets the table has: six (pool, snooker) or none (carom).
@@ -61,6 +65,10 @@ struct Table
 
 /// The capture regions a table has when none are given: sixPockets for its size, none without pockets.
 std::vector<Pocket> defaultPockets(const Table& table);
+
+/// Whether two tables have the same default capture regions (the same size and pocket layout): a reader that finds
+/// no pockets keeps the ones it started from only then.
+bool sameDefaultPockets(const Table& a, const Table& b);
 
 /// Checks a pocket's cut field by field; the error names the field ("table.corner_pockets.mouth").
 Status validate(const PocketCut& cut, const std::string& field);

@@ -20,7 +20,7 @@ struct NoseSegment
     Arc
   };
 
-  std::string id;  ///< "rail.bottom.left", "pocket.bottom_left.jaw.in.facing", … (docs/tables.md lists them)
+  std::string id;  ///< "rail.bottom.left", "pocket.bottom_left.jaw.bottom.facing", … (docs/tables.md lists them)
   Shape shape = Shape::Line;
   Eigen::Vector2d start = Eigen::Vector2d::Zero();
   Eigen::Vector2d end = Eigen::Vector2d::Zero();
