@@ -28,7 +28,10 @@ Expected<BallTrajectory> predictTrajectory(const BallState& start, const BallPro
 {
   if (Status status = detail::checkMotionSetting(ball, table, parameters); !status)
     return status.error();
-  if (Status status = detail::checkStart(start, ball, table); !status)
+  auto geometry = detail::motionGeometry(table);
+  if (!geometry)
+    return geometry.error();
+  if (Status status = detail::checkStart(start, ball, table, geometry.value()); !status)
     return status.error();
   // The lone ball is the one-ball case of the table's simulation.
   auto simulated = detail::runTableSimulation({TableBall{"ball", start}}, ball, table, parameters, {});

@@ -39,7 +39,8 @@ Status checkMotionSetting(const BallProperties& ball, const Table& table, const 
   return validateCushionHeight(table.cushion_height, ball.radius, "table.cushion_height");
 }
 
-Status checkStart(const BallState& start, const BallProperties& ball, const Table& table, const std::string& prefix)
+Status checkStart(const BallState& start, const BallProperties& ball, const Table& table,
+                  const MotionGeometry& geometry, const std::string& prefix)
 {
   if (Status status =
           firstError({requireFinite(start.position, prefix + "position"), requireFinite(start.velocity, prefix + "v"),
@@ -49,21 +50,22 @@ Status checkStart(const BallState& start, const BallProperties& ball, const Tabl
       !status)
     return status;
   const std::string field = prefix + "position";
-  const double reach = cushionReach(table, ball.radius);
-  const double x = std::abs(start.position.x()), y = std::abs(start.position.y());
-  if (x > 0.5 * table.length || y > 0.5 * table.width)
+  const Eigen::Vector2d centre = start.position.head<2>();
+  if (geometry.offTable(start.position))
     return invalidArgument(field, "the ball is off the table");
-  if (x > 0.5 * table.length - reach + CONTACT_DISTANCE || y > 0.5 * table.width - reach + CONTACT_DISTANCE)
-    return invalidArgument(field, "the ball overlaps a cushion");
-  for (std::size_t i = 0; i < table.pockets.size(); ++i)
-    if ((start.position.head<2>() - table.pockets[i].centre).norm() <= table.pockets[i].radius)
-      return invalidArgument(field, "the ball is inside pocket " + std::to_string(i) + "'s capture region");
+  const double reach = cushionReach(table, ball.radius);
+  for (const NosePiece& piece : geometry.noses)
+    if (piece.covers(centre) && piece.overlaps(centre, reach, CONTACT_DISTANCE))
+      return invalidArgument(field, "the ball overlaps a cushion");
+  for (const DropRegion& drop : geometry.drops)
+    if ((centre - drop.centre).norm() <= drop.radius)
+      return invalidArgument(field, "the ball is inside " + drop.name);
   return {};
 }
 
-BallMover::BallMover(const BallProperties& ball, const Table& table, const MotionParameters& parameters,
-                     const Deadline& deadline)
-    : ball_(ball), table_(table), noses_(railNoses(table)), p_(parameters), deadline_(deadline)
+BallMover::BallMover(const BallProperties& ball, const Table& table, const MotionGeometry& geometry,
+                     const MotionParameters& parameters, const Deadline& deadline)
+    : ball_(ball), table_(table), geometry_(geometry), p_(parameters), deadline_(deadline)
 {
 }
 
@@ -119,7 +121,7 @@ Expected<bool> BallMover::runOwnEvent()
       return true;
     case MotionEventType::CushionHit:
     {
-      auto ended = hitCushion(end_.cushion, end_.contact, state, t);
+      auto ended = hitCushion(end_.piece, end_.contact, state, t);
       if (ended && !ended.value())
         plan(state, t);
       return ended;
@@ -189,18 +191,19 @@ BallMover::SegmentEnd BallMover::segmentEnd(const MotionSegment& segment, const 
   SegmentEnd end{motion.end, motion.end_event};
   if (p_.max_time - t < end.duration)
     end = {p_.max_time - t, MotionEventType::TimeLimit};
-  if (auto hit = firstCushionHit(segment, table_, ball_.radius, end.duration))
-    end = {hit->time, MotionEventType::CushionHit, hit->rail, -1, hit->contact};
-  if (auto entry = firstPocketEntry(segment, table_, end.duration))
+  if (auto hit = firstCushionHit(segment, geometry_, table_, ball_.radius, end.duration))
+    end = {hit->time, MotionEventType::CushionHit, hit->piece, -1, hit->contact};
+  if (auto entry = firstPocketEntry(segment, geometry_, end.duration))
     end = {entry->time, MotionEventType::Pocketed, -1, entry->index};
   return end;
 }
 
-Expected<bool> BallMover::hitCushion(int rail, NoseContact contact, BallState& state, double t)
+Expected<bool> BallMover::hitCushion(int piece, NoseContact contact, BallState& state, double t)
 {
+  const NosePiece& nose = geometry_.noses[static_cast<std::size_t>(piece)];
   if (contact == NoseContact::Over)
   {
-    trajectory_.events.push_back({MotionEventType::CushionHit, t, state, rail});
+    trajectory_.events.push_back({MotionEventType::CushionHit, t, state, nose.cushion});
     trajectory_.outcome = MotionOutcome::OffTable;  // its bottom above the nose, the ball passes over it
     status_ = Status::Ended;
     return true;
@@ -208,13 +211,15 @@ Expected<bool> BallMover::hitCushion(int rail, NoseContact contact, BallState& s
   // Touching the cloth, the ball meets the nose and the cloth at once; a cloth contact that separates from the
   // start takes part only if the impact brings it back.
   const bool on_cloth = state.position.z() <= ball_.radius * (1.0 + 1e-9);
-  const Nose& nose = noses_[rail];
   const Eigen::Vector3d normal = cushionNormal(nose, table_, state.position);
+  const Eigen::Vector2d outward = nose.outwardAt(state.position.head<2>());
+  auto outward_part = [&](const Eigen::Vector3d& v)
+  { return nose.shape == NosePiece::Shape::Line ? nose.line.outwardPart(v) : outward.dot(v.head<2>()); };
   const double approach = -state.velocity.dot(normal);
   if (contact == NoseContact::Pressed ||
-      pressedAgainst(rail, on_cloth, on_cloth ? nose.outwardPart(state.velocity) : approach))
+      pressedAgainst(piece, on_cloth, on_cloth ? outward_part(state.velocity) : approach))
   {
-    trajectory_.events.push_back({MotionEventType::CushionContact, t, state, rail});
+    trajectory_.events.push_back({MotionEventType::CushionContact, t, state, nose.cushion});
     trajectory_.outcome = MotionOutcome::AgainstCushion;
     status_ = Status::Ended;
     return true;
@@ -231,8 +236,8 @@ Expected<bool> BallMover::hitCushion(int rail, NoseContact contact, BallState& s
   state.angular_velocity = result.value().angular_velocity;
   if (p_.planar)
     state.velocity.z() = 0.0;
-  trajectory_.events.push_back({MotionEventType::CushionHit, t, state, rail});
-  last_hit_ = {rail, on_cloth, on_cloth ? -nose.outwardPart(state.velocity) : state.velocity.dot(normal)};
+  trajectory_.events.push_back({MotionEventType::CushionHit, t, state, nose.cushion});
+  last_hit_ = {piece, on_cloth, on_cloth ? -outward_part(state.velocity) : state.velocity.dot(normal)};
   return false;
 }
 
@@ -255,15 +260,23 @@ Expected<SolverOptions> BallMover::impactOptions() const
 /// pressed into the rail, by its spin on the cloth, by its weight on a nose below its centre in the air. The hits
 /// would go on as a Zeno sequence of ever smaller ones until the last, approaching to round-off, was missed and the
 /// ball went through the cushion. Sustained contact is not modelled: the path ends.
-bool BallMover::pressedAgainst(int rail, bool on_cloth, double approach) const
+bool BallMover::pressedAgainst(int piece, bool on_cloth, double approach) const
 {
-  return last_hit_.rail == rail && last_hit_.on_cloth == on_cloth &&
+  return last_hit_.piece == piece && last_hit_.on_cloth == on_cloth &&
          last_hit_.rebound_speed < SUSTAINED_CONTACT_SPEED && approach < SUSTAINED_CONTACT_SPEED;
 }
 
 Expected<bool> BallMover::land(BallState& state, double t)
 {
   state.position.z() = ball_.radius;
+  if (geometry_.offTable(state.position))
+  {
+    // It flew over a pocket's jaws or the cushion beside them and comes down beyond the rails: off the table.
+    trajectory_.events.push_back({MotionEventType::Landing, t, state});
+    trajectory_.outcome = MotionOutcome::OffTable;
+    status_ = Status::Ended;
+    return true;
+  }
   if (state.velocity.z() > -TOUCH_DOWN_SPEED)
   {
     // The round-off of a hop of nothing (a cushion hit that left v_z at 1e-16): no impact, the ball is on the cloth.

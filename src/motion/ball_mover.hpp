@@ -23,10 +23,10 @@ Deadline deadlineAfter(double seconds);
 /// its cushions' height against the ball.
 Status checkMotionSetting(const BallProperties& ball, const Table& table, const MotionParameters& parameters);
 
-/// Checks a ball's start: finite, plausible speeds, on the cloth, clear of the cushions and the pockets. The error
-/// names the field ("position", "v", "omega") after `prefix` ("balls[3].").
+/// Checks a ball's start: finite, plausible speeds, on the cloth, clear of the cushions (`geometry`'s noses) and
+/// outside the drop regions. The error names the field ("position", "v", "omega") after `prefix` ("balls[3].").
 Status checkStart(const BallState& start, const BallProperties& ball, const Table& table,
-                  const std::string& prefix = "");
+                  const MotionGeometry& geometry, const std::string& prefix = "");
 
 class BallMover
 {
@@ -38,8 +38,8 @@ public:
     Ended,    ///< pocketed, off the table, pressed against a cushion or at the time limit
   };
 
-  BallMover(const BallProperties& ball, const Table& table, const MotionParameters& parameters,
-            const Deadline& deadline);
+  BallMover(const BallProperties& ball, const Table& table, const MotionGeometry& geometry,
+            const MotionParameters& parameters, const Deadline& deadline);
 
   /// The Start event at t = 0 and the first segment.
   void begin(BallState state);
@@ -76,7 +76,7 @@ private:
   {
     double duration = std::numeric_limits<double>::infinity();
     MotionEventType event = MotionEventType::Rest;
-    int cushion = -1;
+    int piece = -1;  ///< the nose piece it meets (geometry_.noses)
     int pocket = -1;
     NoseContact contact = NoseContact::Impact;
   };
@@ -87,15 +87,15 @@ private:
   /// Ends the current segment at t; one that would have no length is dropped.
   void continueAt(double t);
   SegmentEnd segmentEnd(const MotionSegment& segment, const PhaseMotion& motion, double t) const;
-  Expected<bool> hitCushion(int rail, NoseContact contact, BallState& state, double t);
+  Expected<bool> hitCushion(int piece, NoseContact contact, BallState& state, double t);
   Expected<bool> land(BallState& state, double t);
   Expected<SolverOptions> impactOptions() const;
-  bool pressedAgainst(int rail, bool on_cloth, double approach) const;
+  bool pressedAgainst(int piece, bool on_cloth, double approach) const;
   void end(MotionEventType event, MotionOutcome outcome, double t, const BallState& state);
 
   const BallProperties& ball_;
   const Table& table_;
-  std::array<Nose, 4> noses_;  ///< the rails', numbered as the events' cushions
+  const MotionGeometry& geometry_;
   const MotionParameters& p_;
   const Deadline& deadline_;
   BallTrajectory trajectory_;
@@ -105,7 +105,7 @@ private:
   unsigned version_ = 0;
   struct CushionHitRecord
   {
-    int rail = -1;
+    int piece = -1;
     bool on_cloth = false;
     double rebound_speed = 0.0;  ///< m/s away from the cushion: horizontally on the cloth, along the normal in the air
   } last_hit_;

@@ -11,21 +11,32 @@ namespace detail
 namespace
 {
 BallCollision collisionOf(const std::vector<BallState>& touching, const BallProperties& ball, const Table& table,
-                          const BallContactSettings& contact)
+                          const MotionGeometry& geometry, const BallContactSettings& contact)
 {
   BallCollision collision = collisionSettings(ball, table, contact);
-  const std::array<Nose, 4> noses = railNoses(table);
   for (std::size_t i = 0; i < touching.size(); ++i)
   {
     const BallState& state = touching[i];
     collision.balls.push_back({state.position.head<2>(), state.velocity, state.angular_velocity,
                                std::max(state.position.z() - ball.radius, 0.0)});
-    for (int rail : touchedCushions(state.position, table, ball.radius))
-      collision.cushions.push_back({i, cushionNormal(noses[rail], table, state.position)});
+    for (CushionTouch& touch : cushionTouches(i, state.position, geometry, table, ball.radius))
+      collision.cushions.push_back(std::move(touch));
   }
   return collision;
 }
 }  // namespace
+
+std::vector<CushionTouch> cushionTouches(std::size_t ball, const Eigen::Vector3d& centre,
+                                         const MotionGeometry& geometry, const Table& table, double radius)
+{
+  std::vector<CushionTouch> touches;
+  for (int index : touchedNoses(centre, geometry, table, radius))
+  {
+    const NosePiece& piece = geometry.noses[static_cast<std::size_t>(index)];
+    touches.push_back({ball, cushionNormal(piece, table, centre), "cushion" + std::to_string(piece.cushion)});
+  }
+  return touches;
+}
 
 BallCollision collisionSettings(const BallProperties& ball, const Table& table, const BallContactSettings& contact)
 {
@@ -42,10 +53,10 @@ BallCollision collisionSettings(const BallProperties& ball, const Table& table, 
 }
 
 Expected<std::vector<BallState>> resolveBallImpact(const std::vector<BallState>& touching, const BallProperties& ball,
-                                                   const Table& table, const BallContactSettings& contact,
-                                                   const SolverOptions& options)
+                                                   const Table& table, const MotionGeometry& geometry,
+                                                   const BallContactSettings& contact, const SolverOptions& options)
 {
-  auto solved = solve(collisionOf(touching, ball, table, contact), options);
+  auto solved = solve(collisionOf(touching, ball, table, geometry, contact), options);
   if (!solved && solved.error().code == ErrorKind::NoApproachingContact)
     return touching;  // a graze within the touching tolerance: nothing presses, nothing changes
   if (!solved)

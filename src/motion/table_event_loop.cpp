@@ -28,14 +28,19 @@ class TableSimulation
 {
 public:
   TableSimulation(const std::vector<TableBall>& balls, const BallProperties& ball, const Table& table,
-                  const MotionParameters& p, const BallContactSettings& contact)
-      : ball_(ball), table_(table), p_(p), contact_(contact), deadline_(deadlineAfter(p.impact.max_seconds))
+                  const MotionGeometry& geometry, const MotionParameters& p, const BallContactSettings& contact)
+      : ball_(ball),
+        table_(table),
+        geometry_(geometry),
+        p_(p),
+        contact_(contact),
+        deadline_(deadlineAfter(p.impact.max_seconds))
   {
     movers_.reserve(balls.size());
     for (const TableBall& b : balls)
     {
       result_.ids.push_back(b.id);
-      movers_.emplace_back(ball_, table_, p_, deadline_);
+      movers_.emplace_back(ball_, table_, geometry_, p_, deadline_);
     }
     for (std::size_t i = 0; i < balls.size(); ++i)
       movers_[i].begin(balls[i].state);
@@ -277,7 +282,8 @@ private:
     states.reserve(cluster.size());
     for (int k : cluster)
       states.push_back(movers_[k].segment().at(t));
-    auto after = resolveBallImpact(states, ball_, table_, limit ? plastic(contact_) : contact_, impactOptions());
+    auto after =
+        resolveBallImpact(states, ball_, table_, geometry_, limit ? plastic(contact_) : contact_, impactOptions());
     if (!after)
       return after.error();
     for (std::size_t k = 0; k < cluster.size(); ++k)
@@ -335,6 +341,7 @@ private:
 
   const BallProperties& ball_;
   const Table& table_;
+  const MotionGeometry& geometry_;
   const MotionParameters& p_;
   const BallContactSettings& contact_;
   Deadline deadline_;
@@ -350,7 +357,10 @@ Expected<TableTrajectory> runTableSimulation(const std::vector<TableBall>& balls
                                              const Table& table, const MotionParameters& parameters,
                                              const BallContactSettings& contact)
 {
-  return TableSimulation(balls, ball, table, parameters, contact).run();
+  auto geometry = motionGeometry(table);
+  if (!geometry)
+    return geometry.error();
+  return TableSimulation(balls, ball, table, geometry.value(), parameters, contact).run();
 }
 
 }  // namespace detail

@@ -93,6 +93,33 @@ struct NoseHit
   NoseContact contact;
 };
 
+/// The first rise through zero of `overlap` over [start, end], sampled NOSE_SAMPLES times (after `refinements`
+/// samples ever closer to the start, each half the next) and located with TOMS 748, at which `contact_at` finds a
+/// contact.
+template <class Overlap, class ContactAt>
+std::optional<NoseHit> firstSampledContact(Overlap overlap, ContactAt contact_at, double start, double f_start,
+                                           double end, int refinements)
+{
+  if (!(end > start))
+    return std::nullopt;
+  const double first = (end - start) / NOSE_SAMPLES;
+  double lo = start, f_lo = f_start;
+  for (int k = 1 - refinements; k <= NOSE_SAMPLES; ++k)
+  {
+    const double hi = k <= 0 ? start + std::ldexp(first, k - 1) : start + first * k, f_hi = overlap(hi);
+    if (f_lo <= 0.0 && f_hi > 0.0)
+    {
+      const double tau = locateEvent(overlap, lo, hi, f_lo, f_hi);
+      if (const auto contact = contact_at(tau))
+        return NoseHit{tau, *contact};
+      // A rise of round-off, or a touch slower than REST_SPEED that turns away: no contact.
+    }
+    lo = hi;
+    f_lo = f_hi;
+  }
+  return std::nullopt;
+}
+
 /// On the cloth the ball's centre stays at height R, so it touches the nose exactly when its centre reaches the
 /// line at `cushionReach` from the edge: a root of a quadratic. A ball touching the nose at the start (to
 /// CONTACT_DISTANCE, or inside it) meets it at once if it moves or is pressed into it; the root where a ball that
@@ -173,21 +200,8 @@ std::optional<NoseHit> airborneContact(const MotionSegment& segment, const Nose&
     }
     f_start = overlap(start);
   }
-  const double first = (end - start) / NOSE_SAMPLES;
-  double lo = start, f_lo = f_start;
-  for (int k = 1 - refinements; k <= NOSE_SAMPLES; ++k)
-  {
-    const double hi = k <= 0 ? start + std::ldexp(first, k - 1) : start + first * k, f_hi = overlap(hi);
-    if (f_lo <= 0.0 && f_hi > 0.0)
-    {
-      const double tau = locateEvent(overlap, lo, hi, f_lo, f_hi);
-      if (const auto contact = contact_at(tau))
-        return NoseHit{tau, *contact};
-      // A rise of round-off, or a touch slower than REST_SPEED that turns away: no contact.
-    }
-    lo = hi;
-    f_lo = f_hi;
-  }
+  if (const auto hit = firstSampledContact(overlap, contact_at, start, f_start, end, refinements))
+    return hit;
   if (!passes)
     return std::nullopt;
   if (segment.at(segment.start_time + *passes).position.z() - table.cushion_height >= radius - CONTACT_DISTANCE)
@@ -199,47 +213,161 @@ std::optional<NoseHit> airborneContact(const MotionSegment& segment, const Nose&
 }
 }  // namespace
 
-std::array<Nose, 4> railNoses(const Table& table)
+namespace
 {
-  const double x = 0.5 * table.length, y = 0.5 * table.width;
-  return {{{{-1.0, 0.0}, x}, {{1.0, 0.0}, x}, {{0.0, -1.0}, y}, {{0.0, 1.0}, y}}};
+/// The ball's motion relative to a round piece at an instant: its centre's horizontal distance ρ from the piece's
+/// centre and that distance's first two derivatives.
+struct RadialMotion
+{
+  Eigen::Vector2d direction;  ///< unit, from the piece's centre towards the ball's
+  double distance, rate, rate_slope;
+};
+
+RadialMotion radialMotion(const MotionSegment& segment, const NosePiece& piece, double tau)
+{
+  const BallState s = segment.at(segment.start_time + tau);
+  const Eigen::Vector2d q = s.position.head<2>() - piece.centre;
+  const Eigen::Vector2d dq = s.velocity.head<2>(), ddq = segment.acceleration.head<2>();
+  const double rho = q.norm();
+  const Eigen::Vector2d direction = q / rho;
+  const double rate = direction.dot(dq);
+  // ρ'' = (|q'|² − ρ'²)/ρ + q̂·q'': the motion across the radius carries the centre away, the acceleration along it.
+  return {direction, rho, rate, (dq.squaredNorm() - rate * rate) / rho + direction.dot(ddq)};
 }
 
-Eigen::Vector3d cushionNormal(const Nose& nose, const Table& table, const Eigen::Vector3d& centre)
+/// On the cloth a ball touches a round piece when its centre comes within the piece's radius plus `reach` of the
+/// piece's centre: the balls' contact search finds that moment exactly.
+std::optional<NoseHit> onClothRoundContact(const MotionSegment& segment, const NosePiece& piece, double reach,
+                                           double horizon)
+{
+  const Eigen::Vector3d from_centre(segment.start.position.x() - piece.centre.x(),
+                                    segment.start.position.y() - piece.centre.y(), 0.0);
+  const Eigen::Vector3d velocity(segment.start.velocity.x(), segment.start.velocity.y(), 0.0);
+  const Eigen::Vector3d acceleration(segment.acceleration.x(), segment.acceleration.y(), 0.0);
+  const auto tau = earliestBallContact(from_centre, velocity, acceleration, piece.radius + reach, horizon);
+  if (!tau)
+    return std::nullopt;
+  const RadialMotion m = radialMotion(segment, piece, *tau);
+  if (const auto contact = contactOf({piece.radius + reach - m.distance, -m.rate, -m.rate_slope}, horizon - *tau))
+    return NoseHit{*tau, *contact};
+  return std::nullopt;
+}
+
+/// In the air: in the vertical plane through the piece's centre and the ball's, p = (ρ − r, z − h) runs from the
+/// nose to the ball's centre; the ball touches the nose when |p| = R.
+Approach airborneRoundApproach(const MotionSegment& segment, const NosePiece& piece, const Table& table, double radius,
+                               double tau)
+{
+  const RadialMotion m = radialMotion(segment, piece, tau);
+  const BallState s = segment.at(segment.start_time + tau);
+  const double u = m.distance - piece.radius, w = s.position.z() - table.cushion_height;
+  const double dw = s.velocity.z(), ddw = segment.acceleration.z();
+  const double d = std::hypot(u, w);
+  const double rate = (u * m.rate + w * dw) / d;
+  const double slope = (m.rate * m.rate + u * m.rate_slope + dw * dw + w * ddw - rate * rate) / d;
+  return {radius - d, -rate, -slope};
+}
+
+/// In the air a ball can touch a round piece only once its centre is within the piece's radius plus R of the piece's
+/// centre horizontally: from there the overlap R² − (ρ − r)² − (z − h)² is sampled as for a straight nose.
+std::optional<NoseHit> airborneRoundContact(const MotionSegment& segment, const NosePiece& piece, const Table& table,
+                                            double radius, double horizon)
+{
+  auto overlap = [&](double tau)
+  {
+    const Eigen::Vector3d centre = segment.at(segment.start_time + tau).position;
+    const double u = (centre.head<2>() - piece.centre).norm() - piece.radius, w = centre.z() - table.cushion_height;
+    return radius * radius - u * u - w * w;
+  };
+  auto contact_at = [&](double tau)
+  { return contactOf(airborneRoundApproach(segment, piece, table, radius, tau), horizon - tau); };
+  const Approach initial = airborneRoundApproach(segment, piece, table, radius, 0.0);
+  if (initial.overlap >= -CONTACT_DISTANCE)
+  {
+    if (const auto contact = contactOf(initial, horizon))
+      return NoseHit{0.0, *contact};
+    return firstSampledContact(overlap, contact_at, 0.0, 0.0, horizon, RETURN_SAMPLES);
+  }
+  double start = 0.0;
+  const Eigen::Vector3d from_centre(segment.start.position.x() - piece.centre.x(),
+                                    segment.start.position.y() - piece.centre.y(), 0.0);
+  if (from_centre.norm() > piece.radius + radius)
+  {
+    const Eigen::Vector3d velocity(segment.start.velocity.x(), segment.start.velocity.y(), 0.0);
+    const Eigen::Vector3d acceleration(segment.acceleration.x(), segment.acceleration.y(), 0.0);
+    const auto near = earliestBallContact(from_centre, velocity, acceleration, piece.radius + radius, horizon);
+    if (!near)
+      return std::nullopt;
+    start = *near;
+  }
+  return firstSampledContact(overlap, contact_at, start, overlap(start), horizon, 0);
+}
+
+std::optional<NoseHit> pieceContact(const MotionSegment& segment, const NosePiece& piece, const Table& table,
+                                    double radius, double reach, double horizon)
+{
+  const bool airborne = segment.phase == MotionPhase::Airborne;
+  if (piece.shape == NosePiece::Shape::Line)
+    return airborne ? airborneContact(segment, piece.line, table, radius, horizon)
+                    : onClothContact(segment, piece.line, reach, horizon);
+  return airborne ? airborneRoundContact(segment, piece, table, radius, horizon)
+                  : onClothRoundContact(segment, piece, reach, horizon);
+}
+}  // namespace
+
+Eigen::Vector3d cushionNormal(const NosePiece& piece, const Table& table, const Eigen::Vector3d& centre)
 {
   Eigen::Vector3d normal;
-  // From the nose line, into the table; adding +0 leaves a rail's normal exactly along its axis (no −0 across it).
-  normal.head<2>() = (nose.outwardPart(centre) - nose.edge) * nose.outward + Eigen::Vector2d::Zero();
+  if (piece.shape == NosePiece::Shape::Line)
+  {
+    // From the nose line, into the table; adding +0 leaves a rail's normal exactly along its axis (no −0 across it).
+    normal.head<2>() =
+        (piece.line.outwardPart(centre) - piece.line.edge) * piece.line.outward + Eigen::Vector2d::Zero();
+  }
+  else
+  {
+    const Eigen::Vector2d from_centre = centre.head<2>() - piece.centre;
+    const double rho = from_centre.norm();
+    normal.head<2>() = from_centre * ((rho - piece.radius) / rho);
+  }
   normal.z() = centre.z() - table.cushion_height;
   return normal.normalized();
 }
 
-std::vector<int> touchedCushions(const Eigen::Vector3d& centre, const Table& table, double radius)
+std::vector<int> touchedNoses(const Eigen::Vector3d& centre, const MotionGeometry& geometry, const Table& table,
+                              double radius)
 {
-  std::vector<int> rails;
-  const std::array<Nose, 4> noses = railNoses(table);
-  for (int rail = 0; rail < 4; ++rail)
+  std::vector<int> touched;
+  std::vector<Eigen::Vector3d> normals;
+  for (std::size_t i = 0; i < geometry.noses.size(); ++i)
   {
-    const double across = noses[rail].edge - noses[rail].outwardPart(centre);  // from the nose line into the table
-    if (std::hypot(across, centre.z() - table.cushion_height) <= radius + CONTACT_DISTANCE)
-      rails.push_back(rail);
+    const NosePiece& piece = geometry.noses[i];
+    if (!piece.covers(centre.head<2>()) ||
+        std::hypot(piece.across(centre.head<2>()), centre.z() - table.cushion_height) > radius + CONTACT_DISTANCE)
+      continue;
+    // Pieces that join where the ball touches both meet it at one point, along one normal: one contact.
+    const Eigen::Vector3d normal = cushionNormal(piece, table, centre);
+    if (std::none_of(normals.begin(), normals.end(), [&](const auto& n) { return n.dot(normal) > 1.0 - 1e-12; }))
+    {
+      touched.push_back(static_cast<int>(i));
+      normals.push_back(normal);
+    }
   }
-  return rails;
+  return touched;
 }
 
-std::optional<CushionCrossing> firstCushionHit(const MotionSegment& segment, const Table& table, double radius,
-                                               double horizon)
+std::optional<CushionCrossing> firstCushionHit(const MotionSegment& segment, const MotionGeometry& geometry,
+                                               const Table& table, double radius, double horizon)
 {
   const double reach = cushionReach(table, radius);
   std::optional<CushionCrossing> best;
-  const std::array<Nose, 4> noses = railNoses(table);
-  for (int rail = 0; rail < 4; ++rail)
+  for (std::size_t i = 0; i < geometry.noses.size(); ++i)
   {
-    const Nose& nose = noses[rail];
-    const auto hit = segment.phase == MotionPhase::Airborne ? airborneContact(segment, nose, table, radius, horizon)
-                                                            : onClothContact(segment, nose, reach, horizon);
-    if (hit && (!best || hit->time < best->time))
-      best = CushionCrossing{hit->time, rail, hit->contact};
+    const NosePiece& piece = geometry.noses[i];
+    const auto hit = pieceContact(segment, piece, table, radius, reach, horizon);
+    if (hit && (!best || hit->time < best->time) &&
+        piece.covers(segment.at(segment.start_time + hit->time).position.head<2>()))
+      best = CushionCrossing{hit->time, static_cast<int>(i), hit->contact};
   }
   return best;
 }
@@ -259,13 +387,13 @@ std::optional<double> firstCircleEntry(const MotionSegment& segment, const Eigen
   return earliestBallContact(from_centre, velocity, acceleration, radius, horizon);
 }
 
-std::optional<Crossing> firstPocketEntry(const MotionSegment& segment, const Table& table, double horizon)
+std::optional<Crossing> firstPocketEntry(const MotionSegment& segment, const MotionGeometry& geometry, double horizon)
 {
   std::optional<Crossing> best;
-  for (std::size_t i = 0; i < table.pockets.size(); ++i)
+  for (std::size_t i = 0; i < geometry.drops.size(); ++i)
   {
-    const Pocket& pocket = table.pockets[i];
-    const auto entry = firstCircleEntry(segment, pocket.centre, pocket.radius, best ? best->time : horizon);
+    const DropRegion& drop = geometry.drops[i];
+    const auto entry = firstCircleEntry(segment, drop.centre, drop.radius, best ? best->time : horizon);
     if (entry && *entry == 0.0)
       return Crossing{0.0, static_cast<int>(i)};
     if (entry)

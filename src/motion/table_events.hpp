@@ -6,6 +6,7 @@
 
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "billiard_shot_planner/scenarios/ball_collision.hpp"
+#include "motion_geometry.hpp"
 
 namespace billiard_shot_planner
 {
@@ -15,27 +16,15 @@ namespace detail
 /// (scenarios/ball_collision.hpp), also the tolerance of a start position against the cushions.
 constexpr double CONTACT_DISTANCE = TOUCHING_GAP;
 
-/// A rail's nose seen from above: the line outward·x = edge at the cushion's height, `outward` being the unit
-/// horizontal normal out of the table.
-struct Nose
-{
-  Eigen::Vector2d outward;
-  double edge;
-
-  /// How far `v` (a position's or a velocity's horizontal part) points out of the table, across the nose.
-  double outwardPart(const Eigen::Vector3d& v) const { return outward.x() * v.x() + outward.y() * v.y(); }
-};
-
-/// The rails' noses, numbered by their place here: 0 at −x, 1 at +x, 2 at −y, 3 at +y.
-std::array<Nose, 4> railNoses(const Table& table);
-
-/// Unit normal of the contact with `nose` (from the nose towards the ball's centre), with the ball's centre at
+/// Unit normal of the contact with `piece` (from its nose point towards the ball's centre), with the ball's centre at
 /// `centre` (table frame) touching it.
-Eigen::Vector3d cushionNormal(const Nose& nose, const Table& table, const Eigen::Vector3d& centre);
+Eigen::Vector3d cushionNormal(const NosePiece& piece, const Table& table, const Eigen::Vector3d& centre);
 
-/// The rails (their numbers in railNoses) whose nose a ball with its centre at `centre` touches, to
-/// CONTACT_DISTANCE: its centre is R from the nose line, on the cloth or in the air.
-std::vector<int> touchedCushions(const Eigen::Vector3d& centre, const Table& table, double radius);
+/// The pieces (indices of geometry.noses) whose nose a ball with its centre at `centre` touches, to CONTACT_DISTANCE:
+/// its centre is R from the nose, on the cloth or in the air. Pieces that join where the ball touches give one
+/// contact: the first of them.
+std::vector<int> touchedNoses(const Eigen::Vector3d& centre, const MotionGeometry& geometry, const Table& table,
+                              double radius);
 
 /// How the ball meets a cushion nose.
 enum class NoseContact
@@ -48,21 +37,21 @@ enum class NoseContact
 struct CushionCrossing
 {
   double time;  ///< from the segment start
-  int rail;
+  int piece;    ///< the index of geometry.noses
   NoseContact contact;
 };
 
-/// The first time in [0, horizon] at which the ball, moving along `segment`, meets a cushion nose. A ball that
-/// touches a nose at the start meets it there if it moves into it or is pressed into it; one that moves away
-/// meets it only when it comes back. Contact is decided by geometry alone: in the air the ball can pass over a nose
-/// only with its bottom above it.
-std::optional<CushionCrossing> firstCushionHit(const MotionSegment& segment, const Table& table, double radius,
-                                               double horizon);
+/// The first time in [0, horizon] at which the ball, moving along `segment`, meets a piece of a cushion's nose, where
+/// the piece covers the ball's nearest nose point. A ball that touches a nose at the start meets it there if it moves
+/// into it or is pressed into it; one that moves away meets it only when it comes back. Contact is decided by
+/// geometry alone: in the air the ball can pass over a straight nose only with its bottom above it.
+std::optional<CushionCrossing> firstCushionHit(const MotionSegment& segment, const MotionGeometry& geometry,
+                                               const Table& table, double radius, double horizon);
 
 struct Crossing
 {
   double time;  ///< from the segment start
-  int index;    ///< the pocket
+  int index;    ///< the drop region (the pocket)
 };
 
 /// The first time in [0, horizon] at which the ball's centre, moving along `segment`, comes within `radius` of
@@ -72,8 +61,8 @@ struct Crossing
 std::optional<double> firstCircleEntry(const MotionSegment& segment, const Eigen::Vector2d& centre, double radius,
                                        double horizon);
 
-/// The first time in [0, horizon] at which the ball's centre enters a pocket's capture region.
-std::optional<Crossing> firstPocketEntry(const MotionSegment& segment, const Table& table, double horizon);
+/// The first time in [0, horizon] at which the ball's centre enters a drop region.
+std::optional<Crossing> firstPocketEntry(const MotionSegment& segment, const MotionGeometry& geometry, double horizon);
 
 }  // namespace detail
 }  // namespace billiard_shot_planner

@@ -26,6 +26,9 @@ Status checkBalls(const std::vector<TableBall>& balls, const BallProperties& bal
   if (balls.size() > MAX_TABLE_BALLS)
     return invalidArgument(
         "balls", "at most " + std::to_string(MAX_TABLE_BALLS) + " balls, got " + std::to_string(balls.size()));
+  const auto geometry = motionGeometry(table);
+  if (!geometry)
+    return geometry.error();
   std::set<std::string> ids;
   for (std::size_t i = 0; i < balls.size(); ++i)
   {
@@ -33,7 +36,7 @@ Status checkBalls(const std::vector<TableBall>& balls, const BallProperties& bal
       return invalidArgument(ballField(i) + ".id", "must not be empty");
     if (!ids.insert(balls[i].id).second)
       return invalidArgument(ballField(i) + ".id", "\"" + balls[i].id + "\" is used by another ball");
-    if (Status status = checkStart(balls[i].state, ball, table, ballField(i) + "."); !status)
+    if (Status status = checkStart(balls[i].state, ball, table, geometry.value(), ballField(i) + "."); !status)
       return status;
   }
   for (std::size_t i = 0; i < balls.size(); ++i)

@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "table_collisions.hpp"
-#include "table_events.hpp"
 
 namespace billiard_shot_planner
 {
@@ -15,17 +14,15 @@ double gapBetween(const TableBall& a, const TableBall& b, double radius)
 }
 
 void addBall(StrikeBodies& s, const TableBall& ball, std::size_t index, const BallProperties& properties,
-             const Table& table)
+             const Table& table, const detail::MotionGeometry& geometry)
 {
   s.members.push_back(index);
   const std::size_t k = s.bodies.balls.size();
   s.bodies.balls.push_back(
       {ball.state.position.head<2>(), ball.state.velocity, ball.state.angular_velocity, 0.0, ball.id});
   const Eigen::Vector3d centre(ball.state.position.x(), ball.state.position.y(), properties.radius);
-  const std::array<detail::Nose, 4> noses = detail::railNoses(table);
-  for (int rail : detail::touchedCushions(centre, table, properties.radius))
-    s.bodies.cushions.push_back(
-        {k, detail::cushionNormal(noses[rail], table, centre), "cushion" + std::to_string(rail)});
+  for (CushionTouch& touch : detail::cushionTouches(k, centre, geometry, table, properties.radius))
+    s.bodies.cushions.push_back(std::move(touch));
 }
 }  // namespace
 
@@ -34,13 +31,16 @@ StrikeBodies strikeBodies(const std::vector<TableBall>& balls, std::size_t struc
 {
   StrikeBodies s{detail::collisionSettings(ball, table, contact), {}};
   s.bodies.touching_tolerance = TOUCHING_GAP;
-  addBall(s, balls[struck], struck, ball, table);
+  // Valid balls lie on a valid table, whose geometry lays out.
+  const auto laid_out = detail::motionGeometry(table);
+  const detail::MotionGeometry geometry = laid_out ? laid_out.value() : detail::MotionGeometry{};
+  addBall(s, balls[struck], struck, ball, table, geometry);
   // Breadth first: every ball within the gap of a member joins.
   for (std::size_t k = 0; k < s.members.size(); ++k)
     for (std::size_t m = 0; m < balls.size(); ++m)
       if (std::find(s.members.begin(), s.members.end(), m) == s.members.end() &&
           gapBetween(balls[s.members[k]], balls[m], ball.radius) <= TOUCHING_GAP)
-        addBall(s, balls[m], m, ball, table);
+        addBall(s, balls[m], m, ball, table, geometry);
   return s;
 }
 

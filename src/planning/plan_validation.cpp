@@ -72,6 +72,11 @@ Status checkBalls(const PlanRequest& r, const ShotConfiguration& c)
 
 Status checkSearch(const PlanRequest& r, const ShotConfiguration& c)
 {
+  // The planner aims at the capture circles and measures its margins against them: it plans on the table whose
+  // motion drops balls into them.
+  if (c.table.pocket_model != PocketModel::Circles)
+    return invalidArgument("table.pocket_model",
+                           "the planner aims at the capture circles (table.pockets): plan with \"circles\"");
   if (r.pocket < -1 || r.pocket >= static_cast<int>(c.table.pockets.size()))
     return invalidArgument("pocket", "must be −1 (any) or a pocket's index, 0 to " +
                                          std::to_string(c.table.pockets.size() - 1) + ", got " +

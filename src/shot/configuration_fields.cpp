@@ -26,6 +26,12 @@ const ChoiceNames<PocketLayout>& pocketLayouts()
   return names;
 }
 
+const ChoiceNames<PocketModel>& pocketModels()
+{
+  static const ChoiceNames<PocketModel> names{{"circles", PocketModel::Circles}, {"jaws", PocketModel::Jaws}};
+  return names;
+}
+
 const ChoiceNames<BallBallFriction>& ballBallFrictionModels()
 {
   static const ChoiceNames<BallBallFriction> names{{"alciatore", BallBallFriction::Alciatore},
@@ -128,7 +134,9 @@ Status visitTable(ConfigurationVisitor& visitor, Table& table)
           {visitSurface(visitor, "table.cloth", table.cloth), visitSurface(visitor, "table.cushion", table.cushion)});
       !status)
     return status;
-  if (Status status = visitEnum(visitor, "table.pocket_layout", pocketLayouts(), table.pocket_layout); !status)
+  if (Status status = firstError({visitEnum(visitor, "table.pocket_layout", pocketLayouts(), table.pocket_layout),
+                                  visitEnum(visitor, "table.pocket_model", pocketModels(), table.pocket_model)});
+      !status)
     return status;
   visitPocketCut(visitor, "table.corner_pockets", table.corner_pockets);
   visitPocketCut(visitor, "table.side_pockets", table.side_pockets);

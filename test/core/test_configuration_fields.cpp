@@ -44,9 +44,9 @@ TEST(ConfigurationFields, EveryFieldOnceAndLawTypesBeforeTheirParameters)
   ASSERT_TRUE(bsp::visitConfiguration(c, recorder).ok());
   const std::set<std::string> unique(recorder.paths.begin(), recorder.paths.end());
   EXPECT_EQ(unique.size(), recorder.paths.size());
-  // 31 numbers of the default laws and 2 x 5 of the pockets' cuts, one law parameter, one flag, 3 + 4 choices and
+  // 31 numbers of the default laws and 2 x 5 of the pockets' cuts, one law parameter, one flag, 3 + 5 choices and
   // the pockets.
-  EXPECT_EQ(recorder.paths.size(), 41u + 1u + 1u + 7u + 1u);
+  EXPECT_EQ(recorder.paths.size(), 41u + 1u + 1u + 8u + 1u);
   EXPECT_LT(indexOf(recorder.paths, "table.cushion.law.type"),
             indexOf(recorder.paths, "table.cushion.law.yield_speed"));
   EXPECT_LT(indexOf(recorder.paths, "table.width"), indexOf(recorder.paths, "table.pockets"));

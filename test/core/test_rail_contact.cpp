@@ -258,8 +258,8 @@ TEST(RailContact, RandomBallsTouchingARailNeverCrossIt)
     }
     // Into or away from the nose along the contact normal: a hop under a nose above the centre moves into it.
     const Eigen::Vector3d v_start = p.planar ? Eigen::Vector3d(v.x(), v.y(), 0.0) : v;
-    const double approach =
-        -v_start.dot(bsp::detail::cushionNormal(bsp::detail::railNoses(table)[rail], table, start.position));
+    const double approach = -v_start.dot(
+        bsp::detail::cushionNormal(bsp::detail::motionGeometry(table).value().noses[rail], table, start.position));
     const bool met_at_once = t.events.size() > 1 && t.events[1].time == 0.0 && t.events[1].cushion == rail &&
                              (t.events[1].type == Type::CushionHit || t.events[1].type == Type::CushionContact);
     if (approach > 1e-6)
@@ -296,9 +296,9 @@ TEST(RailContact, AHopThatLeavesANoseIsMetWhenItComesBack)
   segment.start.velocity << 0.0, -s * n.x(), s * n.y();
   segment.acceleration << 0.0, 0.0, -g;
   const double flight = (s * n.y() + std::sqrt(std::pow(s * n.y(), 2) + 2 * g * (segment.start.position.z() - R))) / g;
-  const auto hit = bsp::detail::firstCushionHit(segment, table, R, flight);
+  const auto hit = bsp::detail::firstCushionHit(segment, bsp::detail::motionGeometry(table).value(), table, R, flight);
   ASSERT_TRUE(hit.has_value());
-  EXPECT_EQ(hit->rail, 3);
+  EXPECT_EQ(hit->piece, 3);
   EXPECT_EQ(hit->contact, bsp::detail::NoseContact::Impact);
   EXPECT_NEAR(hit->time, 2.0 * s / (g * n.y()), 0.01 * 2.0 * s / (g * n.y()));
   // Where it meets the nose its centre is one radius from the nose line.

@@ -41,6 +41,17 @@ enum class PocketLayout
   None
 };
 
+/// How the motion meets the pockets.
+enum class PocketModel
+{
+  /// The rails run straight through the pockets and a ball drops when its centre enters a capture circle
+  /// (Table::pockets): the planner's model.
+  Circles,
+  /// The table's outline (tableOutline): the rails end at rounded jaw points, the jaws' facings are cushions like the
+  /// rails, and a ball drops when its centre passes over the slate's cut behind the shelf.
+  Jaws
+};
+
 /// A rectangular pool table in the table frame: origin at the centre of the playing surface (the cloth), x along
 /// its length, z up. Cushion noses run along the four edges of the playing surface at `cushion_height` above the
 /// cloth. Defaults: a 9-ft pool table (see config/table_9ft.yaml for sources).
@@ -55,6 +66,7 @@ struct Table
   /// ranges' middles: corner mouth 4.5-4.625 in at 142 deg, shelf 1-2.25 in; side mouth 5-5.125 in at 104 deg, shelf
   /// 0-0.375 in. The jaw's rounding and the slate's cut are not specified (docs/tables.md says how they are chosen).
   PocketLayout pocket_layout = PocketLayout::Six;
+  PocketModel pocket_model = PocketModel::Circles;
   PocketCut corner_pockets{0.1158875, 142.0, 0.041275, 0.005, 0.0529};
   PocketCut side_pockets{0.12858750, 104.0, 0.0047625, 0.005, 0.0631};
 

@@ -15,7 +15,7 @@ namespace billiard_shot_planner
 /// ball that touches it directly or through others, and the cushions those balls touch, all within TOUCHING_GAP.
 struct StrikeBodies
 {
-  BallCollision bodies;              ///< the balls named by their ids, the cushions as "cushion0" … "cushion3"
+  BallCollision bodies;  ///< the balls named by their ids, the cushions as "cushion<k>" (MotionEvent::cushion)
   std::vector<std::size_t> members;  ///< bodies.balls[k] is balls[members[k]]; the struck ball first
 
   bool lone() const { return members.size() == 1 && bodies.cushions.empty(); }

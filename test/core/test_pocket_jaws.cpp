@@ -1,0 +1,234 @@
+// The motion on the table's outline (Table::pocket_model = Jaws): the rails end at rounded jaw points, the facings are
+// cushions, a ball drops once its centre passes over the slate's cut. Checked against the geometry of the WPA cut
+// (a ball that clears both jaw points by its reach drops), the physics of a head-on hit (a ball meeting a jaw point
+// along its normal comes straight back) and the circles model where the two must agree (away from the pockets the
+// rails are the same lines).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "../../src/motion/motion_geometry.hpp"
+#include "billiard_shot_planner/motion/ball_motion.hpp"
+#include "billiard_shot_planner/motion/table_outline.hpp"
+#include "table_helpers.hpp"
+
+namespace bsp = billiard_shot_planner;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+namespace
+{
+constexpr double R = 0.028575;
+const bsp::BallProperties BALL{0.17, R};
+
+bsp::Table jawsTable()
+{
+  bsp::Table table;
+  table.pocket_model = bsp::PocketModel::Jaws;
+  return table;
+}
+
+/// A ball rolling on the cloth from `from` with speed `speed` along the unit `direction`.
+bsp::BallState rolling(const Vector2d& from, const Vector2d& direction, double speed)
+{
+  const Vector2d v = speed * direction;
+  return table_helpers::stateOnCloth(R, from.x(), from.y(), Vector3d(v.x(), v.y(), 0.0),
+                                     Vector3d(-v.y(), v.x(), 0.0) / R);
+}
+
+bsp::BallTrajectory predicted(const bsp::BallState& start, const bsp::Table& table)
+{
+  auto result = bsp::predictTrajectory(start, BALL, table, bsp::MotionParameters{});
+  EXPECT_TRUE(result.ok()) << (result.ok() ? "" : result.error().message);
+  return result.ok() ? result.value() : bsp::BallTrajectory{};
+}
+
+int pocketIndex(const bsp::TableOutline& outline, const std::string& id)
+{
+  for (std::size_t i = 0; i < outline.pockets.size(); ++i)
+    if (outline.pockets[i].id == id)
+      return static_cast<int>(i);
+  return -1;
+}
+
+int cushionIndex(const bsp::TableOutline& outline, const std::string& id)
+{
+  for (std::size_t i = 0; i < outline.cushions.size(); ++i)
+    if (outline.cushions[i].id == id)
+      return static_cast<int>(i);
+  return -1;
+}
+
+const bsp::MotionEvent* firstOf(const bsp::BallTrajectory& path, bsp::MotionEventType type)
+{
+  for (const bsp::MotionEvent& event : path.events)
+    if (event.type == type)
+      return &event;
+  return nullptr;
+}
+}  // namespace
+
+TEST(PocketJaws, TheGeometryHasEveryOutlinePieceAndAPointAtEachFacingsEnd)
+{
+  const bsp::Table table = jawsTable();
+  const bsp::TableOutline outline = bsp::tableOutline(table).value();
+  const bsp::detail::MotionGeometry geometry = bsp::detail::motionGeometry(table).value();
+  int lines = 0, arcs = 0, points = 0;
+  for (const auto& piece : geometry.noses)
+  {
+    lines += piece.shape == bsp::detail::NosePiece::Shape::Line;
+    arcs += piece.shape == bsp::detail::NosePiece::Shape::Arc;
+    points += piece.shape == bsp::detail::NosePiece::Shape::Point;
+  }
+  // Six rails and twelve facings; twelve rounded jaw points; the facings' twelve free ends in the pockets.
+  EXPECT_EQ(lines, 18);
+  EXPECT_EQ(arcs, 12);
+  EXPECT_EQ(points, 12);
+  ASSERT_EQ(geometry.drops.size(), 6u);
+  for (std::size_t i = 0; i < outline.pockets.size(); ++i)
+    EXPECT_EQ(geometry.drops[i].centre, outline.pockets[i].drop_centre);
+
+  // Beyond the rails' lines a ball's centre is off the table except in a pocket's throat, on its shelf.
+  const bsp::PocketOpening& side = *outline.pocket("bottom_side");
+  EXPECT_FALSE(geometry.offTable(Vector3d(0.0, -0.5 * table.width - 0.002, R)));
+  EXPECT_FALSE(geometry.offTable(Vector3d(0.05, -0.5 * table.width - 0.002, R)));
+  EXPECT_TRUE(geometry.offTable(Vector3d(0.5 * side.mouth() + 0.01, -0.5 * table.width - 0.002, R)));
+  EXPECT_TRUE(geometry.offTable(Vector3d(0.3, -0.5 * table.width - 0.002, R)));
+  EXPECT_FALSE(geometry.offTable(Vector3d(0.3, -0.5 * table.width + 0.002, R)));
+
+  // Sharp jaws (no rounding): a point where each rail meets its facing instead of an arc.
+  bsp::Table sharp = table;
+  sharp.corner_pockets.jaw_radius = sharp.side_pockets.jaw_radius = 0.0;
+  const auto sharp_geometry = bsp::detail::motionGeometry(sharp).value();
+  int sharp_points = 0;
+  for (const auto& piece : sharp_geometry.noses)
+    sharp_points += piece.shape == bsp::detail::NosePiece::Shape::Point;
+  EXPECT_EQ(sharp_points, 24);
+}
+
+TEST(PocketJaws, ASlowBallAlongACornerPocketsAxisDropsForEveryOffsetThatClearsTheJaws)
+{
+  // The mouth's half-width less a ball radius: the ball's edge passes inside both jaw points (the nose touches the
+  // ball at its reach, less than R, so it clears them). The facings narrow the throat at 7° per side; the ball may
+  // glance off one and still drops.
+  const bsp::Table table = jawsTable();
+  const bsp::TableOutline outline = bsp::tableOutline(table).value();
+  for (const std::string id : {"bottom_left", "top_right"})
+  {
+    const bsp::PocketOpening& pocket = *outline.pocket(id);
+    const Vector2d across(-pocket.axis.y(), pocket.axis.x());
+    const double half_width = 0.5 * pocket.mouth() - R;
+    for (int k = -10; k <= 10; ++k)
+    {
+      const double offset = half_width * k / 10.0;
+      const Vector2d from = pocket.mouthMiddle() - 0.3 * pocket.axis + offset * across;
+      const bsp::BallTrajectory path = predicted(rolling(from, pocket.axis, 0.6), table);
+      EXPECT_EQ(path.outcome, bsp::MotionOutcome::Pocketed) << id << " offset " << offset;
+      const bsp::MotionEvent* dropped = firstOf(path, bsp::MotionEventType::Pocketed);
+      ASSERT_NE(dropped, nullptr) << id << " offset " << offset;
+      EXPECT_EQ(dropped->pocket, pocketIndex(outline, id));
+      EXPECT_TRUE(pocket.drops(dropped->state.position.head<2>() + 1e-9 * pocket.axis));
+    }
+  }
+}
+
+TEST(PocketJaws, ABallThatMeetsAJawPointHeadOnComesStraightBack)
+{
+  // Along the normal of the rounded point at the middle of its sweep: the contact normal passes through the centre
+  // of the ball and of the arc, so no friction acts across it and the ball comes back along its own line.
+  const bsp::Table table = jawsTable();
+  const bsp::TableOutline outline = bsp::tableOutline(table).value();
+  for (const std::string id : {"pocket.bottom_left.jaw.bottom.point", "pocket.bottom_side.jaw.right.point"})
+  {
+    const int index = cushionIndex(outline, id);
+    ASSERT_GE(index, 0) << id;
+    const bsp::NoseSegment& arc = outline.cushions[static_cast<std::size_t>(index)];
+    const Vector2d middle = Eigen::Rotation2Dd(0.5 * arc.sweep) * (arc.start - arc.centre).normalized();
+    const Vector2d from = arc.centre + (arc.radius + 0.1) * middle;
+    const bsp::BallTrajectory path = predicted(rolling(from, -middle, 0.8), table);
+    EXPECT_NE(path.outcome, bsp::MotionOutcome::Pocketed) << id;
+    const bsp::MotionEvent* hit = firstOf(path, bsp::MotionEventType::CushionHit);
+    ASSERT_NE(hit, nullptr) << id;
+    EXPECT_EQ(hit->cushion, index) << id;
+    const double reach = bsp::cushionReach(table, R);
+    EXPECT_NEAR((hit->state.position.head<2>() - arc.centre).norm(), arc.radius + reach, 1e-9) << id;
+    const Vector2d v = hit->state.velocity.head<2>();
+    EXPECT_GT(v.dot(middle), 0.0) << id << ": it comes back";
+    EXPECT_NEAR(std::abs(v.x() * middle.y() - v.y() * middle.x()), 0.0, 1e-9) << id << ": along its own line";
+  }
+}
+
+TEST(PocketJaws, ABallRollingAlongARailDropsInTheCornerPocket)
+{
+  const bsp::Table table = jawsTable();
+  const bsp::TableOutline outline = bsp::tableOutline(table).value();
+  const double reach = bsp::cushionReach(table, R);
+  const double y = -0.5 * table.width + reach + 1e-4;
+  for (const double speed : {0.5, 1.5, 3.0})
+  {
+    const bsp::BallTrajectory path = predicted(rolling({-0.6, y}, {-1.0, 0.0}, speed), table);
+    EXPECT_EQ(path.outcome, bsp::MotionOutcome::Pocketed) << speed;
+    const bsp::MotionEvent* dropped = firstOf(path, bsp::MotionEventType::Pocketed);
+    ASSERT_NE(dropped, nullptr) << speed;
+    EXPECT_EQ(dropped->pocket, pocketIndex(outline, "bottom_left")) << speed;
+  }
+}
+
+TEST(PocketJaws, AFastBallAlongARailIntoTheSidePocketRunsOffItsFarJaw)
+{
+  // Heading 2° into the rail, it reaches the touching line at the mouth's middle. Across the rest of the mouth its
+  // centre sinks 2.2 mm past that line, while the side pocket's drop region lies 4.8 mm past the rail's line even on
+  // the axis, a reach further: it cannot drop before the far jaw turns it back onto the table.
+  const bsp::Table table = jawsTable();
+  const bsp::TableOutline outline = bsp::tableOutline(table).value();
+  const double reach = bsp::cushionReach(table, R), angle = 2.0 * M_PI / 180.0;
+  const Vector2d direction(std::cos(angle), -std::sin(angle));
+  const Vector2d at_mouth(0.0, -0.5 * table.width + reach);
+  const bsp::BallTrajectory path = predicted(rolling(at_mouth - 0.5 * direction, direction, 3.0), table);
+  EXPECT_NE(path.outcome, bsp::MotionOutcome::Pocketed);
+  const bsp::MotionEvent* hit = firstOf(path, bsp::MotionEventType::CushionHit);
+  ASSERT_NE(hit, nullptr);
+  const std::string id = outline.cushions[static_cast<std::size_t>(hit->cushion)].id;
+  EXPECT_EQ(id.rfind("pocket.bottom_side.jaw.right.", 0), 0u) << id;
+  EXPECT_GT(hit->state.velocity.y(), 0.0) << "back onto the table";
+}
+
+TEST(PocketJaws, AwayFromThePocketsTheRailsAreTheCirclesModels)
+{
+  // A bank off the middle of the long rail and back: the same lines, the same impacts.
+  bsp::Table circles;
+  const bsp::Table jaws = jawsTable();
+  const bsp::BallState start = rolling({-0.8, 0.1}, Vector2d(1.0, -2.0).normalized(), 1.2);
+  const bsp::BallTrajectory a = predicted(start, circles), b = predicted(start, jaws);
+  const bsp::MotionEvent* hit_a = firstOf(a, bsp::MotionEventType::CushionHit);
+  const bsp::MotionEvent* hit_b = firstOf(b, bsp::MotionEventType::CushionHit);
+  ASSERT_NE(hit_a, nullptr);
+  ASSERT_NE(hit_b, nullptr);
+  const bsp::TableOutline outline = bsp::tableOutline(jaws).value();
+  EXPECT_EQ(hit_a->cushion, 2);  // −y
+  EXPECT_EQ(outline.cushions[static_cast<std::size_t>(hit_b->cushion)].id, "rail.bottom.left");
+  EXPECT_NEAR(hit_a->time, hit_b->time, 1e-12);
+  EXPECT_NEAR((hit_a->state.velocity - hit_b->state.velocity).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((hit_a->state.angular_velocity - hit_b->state.angular_velocity).norm(), 0.0, 1e-10);
+}
+
+TEST(PocketJaws, AStartInsideAJawOrADropRegionIsRefusedNamingThePocket)
+{
+  const bsp::Table table = jawsTable();
+  const bsp::TableOutline outline = bsp::tableOutline(table).value();
+  // On the slate, 1 cm from the corner along the corner pocket's axis: past the shelf, over the slate's cut.
+  const Vector2d corner(-0.5 * table.length, -0.5 * table.width);
+  auto in_drop =
+      bsp::predictTrajectory(table_helpers::stateOnCloth(R, corner.x() + 0.01, corner.y() + 0.01), BALL, table, {});
+  ASSERT_FALSE(in_drop.ok());
+  EXPECT_EQ(in_drop.error().field, "position");
+  EXPECT_NE(in_drop.error().message.find("pocket bottom_left's drop region"), std::string::npos)
+      << in_drop.error().message;
+  // Pressed into a jaw's rounded point, where the rail ends at the corner pocket.
+  const bsp::NoseSegment& point = *outline.cushion("pocket.bottom_left.jaw.bottom.point");
+  const Vector2d into = point.centre + (point.radius + 0.5 * R) * Vector2d(0.0, 1.0);
+  auto in_jaw = bsp::predictTrajectory(table_helpers::stateOnCloth(R, into.x(), into.y()), BALL, table, {});
+  ASSERT_FALSE(in_jaw.ok());
+  EXPECT_NE(in_jaw.error().message.find("overlaps a cushion"), std::string::npos) << in_jaw.error().message;
+}
