@@ -215,6 +215,12 @@ TEST(TableYaml, APocketCutOutOfRangeOrALayoutNotKnownNamesTheField)
   const auto layout = bsp::parseTableYaml("table: {pocket_layout: eight}");
   ASSERT_FALSE(layout.ok());
   EXPECT_EQ(layout.error().field, "table.pocket_layout");
+  const auto model = bsp::parseTableYaml("table: {pocket_model: holes}");
+  ASSERT_FALSE(model.ok());
+  EXPECT_EQ(model.error().field, "table.pocket_model");
+  const auto jaws = bsp::parseTableYaml("table: {pocket_model: jaws}");
+  ASSERT_TRUE(jaws.ok()) << jaws.error().describe();
+  EXPECT_EQ(jaws.value().pocket_model, bsp::PocketModel::Jaws);
   // A table without pockets lays no capture regions, and refuses listed ones.
   const auto carom = bsp::parseTableYaml("table: {pocket_layout: none}");
   ASSERT_TRUE(carom.ok()) << carom.error().describe();

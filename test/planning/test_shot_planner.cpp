@@ -298,6 +298,12 @@ TEST(ShotPlanner, BadRequestsAreRefusedNamingTheField)
   r = good;
   r.pocket = 6;
   EXPECT_EQ(field(r), "pocket");
+  // The planner aims at capture circles: it does not plan on the jaws' model.
+  bsp::ShotConfiguration jaws;
+  jaws.table.pocket_model = bsp::PocketModel::Jaws;
+  const auto on_jaws = bsp::planShot(good, jaws);
+  ASSERT_FALSE(on_jaws.ok());
+  EXPECT_EQ(on_jaws.error().field, "table.pocket_model");
   r = good;
   r.limits.min_speed = 3.0;
   r.limits.max_speed = 2.0;
