@@ -4,6 +4,8 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "billiard_shot_planner/motion/table_outline.hpp"
 
@@ -238,13 +240,21 @@ void addTable(visualization_msgs::MarkerArray& array, const Table& table, const 
     block.color = rgba(0.35f, 0.2f, 0.1f);
     array.markers.push_back(block);
   }
-  for (std::size_t i = 0; i < table.pockets.size(); ++i)
+  // What the motion drops a ball into: the capture circles, or under the jaws' model the drop regions.
+  std::vector<std::pair<Eigen::Vector2d, double>> holes;
+  if (table.pocket_model == PocketModel::Jaws)
+    for (const PocketOpening& opening : outline.value().pockets)
+      holes.emplace_back(opening.drop_centre, opening.drop_radius);
+  else
+    for (const Pocket& capture : table.pockets)
+      holes.emplace_back(capture.centre, capture.radius);
+  for (std::size_t i = 0; i < holes.size(); ++i)
   {
     Marker pocket = marker(frame, "pockets", static_cast<int>(i), Marker::CYLINDER);
-    pocket.pose.position.x = table.pockets[i].centre.x();
-    pocket.pose.position.y = table.pockets[i].centre.y();
+    pocket.pose.position.x = holes[i].first.x();
+    pocket.pose.position.y = holes[i].first.y();
     pocket.pose.position.z = 0.001;
-    pocket.scale.x = pocket.scale.y = 2.0 * table.pockets[i].radius;
+    pocket.scale.x = pocket.scale.y = 2.0 * holes[i].second;
     pocket.scale.z = 0.002;
     pocket.color = rgba(0.0f, 0.0f, 0.0f);
     array.markers.push_back(pocket);

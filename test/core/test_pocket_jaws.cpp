@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <random>
 #include <string>
 
 #include "../../src/motion/motion_geometry.hpp"
@@ -300,4 +302,73 @@ TEST(PocketJaws, TheEffectiveTargetsAreAlciatoresSlowShotAnalysis)
       EXPECT_GE(target, c.alciatore_in) << c.pocket << " " << c.angle_deg << " deg at " << arrival << " m/s";
       EXPECT_LE(target, c.alciatore_in + 0.25) << c.pocket << " " << c.angle_deg << " deg at " << arrival << " m/s";
     }
+}
+
+TEST(PocketJaws, RandomShotsAtThePocketsNeverEnterACushionOrAJaw)
+{
+  // Balls sent from around every pocket in random directions, speeds and spins: on the cloth no centre along any path
+  // comes closer to a nose piece than the reach (the ball would be inside the cushion), a dropped ball is over its
+  // drop region, and every path ends.
+  const bsp::Table table = jawsTable();
+  const bsp::TableOutline outline = bsp::tableOutline(table).value();
+  const bsp::detail::MotionGeometry geometry = bsp::detail::motionGeometry(table).value();
+  const double reach = bsp::cushionReach(table, R);
+  std::mt19937 random(38);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int dropped = 0, hit_jaws = 0, shots = 0;
+  for (int k = 0; k < 240; ++k)
+  {
+    const bsp::PocketOpening& pocket = outline.pockets[static_cast<std::size_t>(k) % outline.pockets.size()];
+    const Vector2d from = pocket.mouthMiddle() - (0.08 + 0.3 * unit(random)) * pocket.axis +
+                          (unit(random) - 0.5) * 0.4 * Vector2d(-pocket.axis.y(), pocket.axis.x());
+    const double heading = (unit(random) - 0.5) * 1.6 * M_PI;
+    const Vector2d direction = Eigen::Rotation2Dd(heading) * pocket.axis;
+    bsp::BallState start = rolling(from, direction, 0.2 + 4.8 * unit(random));
+    start.angular_velocity += Vector3d(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5) * 150.0;
+    auto path = bsp::predictTrajectory(start, BALL, table, {});
+    if (!path.ok())
+    {
+      EXPECT_EQ(path.error().field, "position") << k << ": " << path.error().describe();
+      continue;
+    }
+    ++shots;
+    for (const bsp::MotionEvent& event : path.value().events)
+      if (event.type == bsp::MotionEventType::CushionHit && event.cushion >= 0 &&
+          outline.cushions[static_cast<std::size_t>(event.cushion)].id.rfind("pocket.", 0) == 0)
+        ++hit_jaws;
+    for (const bsp::TrajectorySample& sample : path.value().sample(0.002))
+    {
+      const Vector3d& centre = sample.state.position;
+      if (centre.z() > R * (1.0 + 1e-9))
+        continue;
+      if (geometry.offTable(centre))
+      {
+        // Only where a ball that flew over the jaws comes down beyond the rails, and ends there.
+        EXPECT_EQ(path.value().outcome, bsp::MotionOutcome::OffTable) << k;
+        EXPECT_EQ(sample.time, path.value().events.back().time) << k;
+        continue;
+      }
+      for (const auto& piece : geometry.noses)
+      {
+        if (piece.covers(centre.head<2>()))
+        {
+          ASSERT_GE(piece.across(centre.head<2>()), reach - 1e-7) << "shot " << k << " at t = " << sample.time;
+        }
+      }
+    }
+    EXPECT_NE(path.value().outcome, bsp::MotionOutcome::TimeLimit) << k;
+    if (path.value().outcome == bsp::MotionOutcome::Pocketed)
+    {
+      ++dropped;
+      const bsp::MotionEvent& last = path.value().events.back();
+      EXPECT_TRUE(outline.pockets[static_cast<std::size_t>(last.pocket)].drops(last.state.position.head<2>() +
+                                                                               1e-9 * last.state.velocity.head<2>()))
+          << k;
+    }
+  }
+  std::printf("%d shots, %d dropped, %d jaw hits\n", shots, dropped, hit_jaws);
+  // The sweep means something: most shots start, many drop, many meet a jaw.
+  EXPECT_GT(shots, 200);
+  EXPECT_GT(dropped, 30);
+  EXPECT_GT(hit_jaws, 30);
 }

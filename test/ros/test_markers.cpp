@@ -3,6 +3,8 @@
 // frame.
 #include <gtest/gtest.h>
 
+#include "billiard_shot_planner/motion/table_outline.hpp"
+
 #include <map>
 #include <set>
 
@@ -178,6 +180,22 @@ TEST(TrajectoryMarkers, TheTableAloneIsItsClothCushionsAndPockets)
     {
       EXPECT_NEAR(m.pose.position.y, -0.75 - 0.025, 1e-12);
     }
+
+  // Under the jaws' model the pockets drawn are the drop regions behind the shelves.
+  bsp::Table jaws = table;
+  jaws.pocket_model = bsp::PocketModel::Jaws;
+  const auto outline = bsp::tableOutline(jaws).value();
+  int drops = 0;
+  for (const auto& m : bsp::tableMarkers(jaws, "table").markers)
+    if (m.ns == "pockets")
+    {
+      const auto& opening = outline.pockets[static_cast<std::size_t>(m.id)];
+      EXPECT_DOUBLE_EQ(m.pose.position.x, opening.drop_centre.x());
+      EXPECT_DOUBLE_EQ(m.pose.position.y, opening.drop_centre.y());
+      EXPECT_DOUBLE_EQ(m.scale.x, 2.0 * opening.drop_radius);
+      ++drops;
+    }
+  EXPECT_EQ(drops, 6);
 
   table.pocket_layout = bsp::PocketLayout::None;
   table.pockets.clear();
