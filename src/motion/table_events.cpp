@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
 
 #include "ball_contact_time.hpp"
 #include "phase_dynamics.hpp"
@@ -23,36 +26,46 @@ double locateEvent(Function f, double lo, double hi, double f_lo, double f_hi)
   return boost::math::tools::toms748_solve(f, lo, hi, f_lo, f_hi, tolerance, iterations).second;
 }
 
-/// The smallest root in (lo, hi] of c + b τ + ½ a τ² = 0 at which the function rises through zero, if any.
-std::optional<double> firstRisingRoot(double c, double b, double a, double lo, double hi)
+/// The roots in (lo, hi] of c + b τ + ½ a τ² = 0, in order.
+std::vector<double> quadraticRoots(double c, double b, double a, double lo, double hi)
 {
-  std::optional<double> best;
-  auto consider = [&](double tau)
+  std::vector<double> roots;
+  auto keep = [&](double tau)
   {
-    if (tau > lo && tau <= hi && b + a * tau >= 0.0 && (!best || tau < *best))
-      best = tau;
+    if (tau > lo && tau <= hi)
+      roots.push_back(tau);
   };
   if (std::abs(a) < 1e-300)
   {
     if (b != 0.0)
-      consider(-c / b);
-    return best;
+      keep(-c / b);
+    return roots;
   }
   const double discriminant = b * b - 2.0 * a * c;
   if (discriminant < 0.0)
-    return best;
+    return roots;
   // Numerically stable pair of roots of ½a τ² + b τ + c.
   const double q = -(b + std::copysign(std::sqrt(discriminant), b));
   if (q != 0.0)
   {
-    consider(q / a);
-    consider(2.0 * c / q);
+    keep(q / a);
+    keep(2.0 * c / q);
   }
   else
   {
-    consider(0.0);
+    keep(0.0);
   }
-  return best;
+  std::sort(roots.begin(), roots.end());
+  return roots;
+}
+
+/// The smallest root in (lo, hi] of c + b τ + ½ a τ² = 0 at which the function rises through zero, if any.
+std::optional<double> firstRisingRoot(double c, double b, double a, double lo, double hi)
+{
+  for (const double tau : quadraticRoots(c, b, a, lo, hi))
+    if (b + a * tau >= 0.0)
+      return tau;
+  return std::nullopt;
 }
 }  // namespace
 
@@ -300,18 +313,83 @@ std::optional<NoseHit> airborneRoundContact(const MotionSegment& segment, const 
       return std::nullopt;
     start = *near;
   }
-  return firstSampledContact(overlap, contact_at, start, overlap(start), horizon, 0);
+  // In the air the centre moves uniformly across the cloth: it leaves the circle of r + R at the later root of the
+  // quadratic |q + v τ|² = (r + R)², and the samples need not reach further.
+  double end = horizon;
+  if (segment.acceleration.head<2>().isZero())
+  {
+    const Eigen::Vector2d q = from_centre.head<2>(), v = segment.start.velocity.head<2>();
+    const double reach_out = piece.radius + radius;
+    const std::vector<double> roots =
+        quadraticRoots(q.squaredNorm() - reach_out * reach_out, 2.0 * q.dot(v), 2.0 * v.squaredNorm(),
+                       -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity());
+    if (!roots.empty() && roots.back() > start)
+      end = std::min(end, roots.back());
+  }
+  return firstSampledContact(overlap, contact_at, start, overlap(start), end, 0);
+}
+
+/// The stretches of [0, horizon] over which a straight piece covers the ball's centre: where the centre's place
+/// along the piece, a quadratic in time, lies within its extent. An infinite rail covers it throughout.
+std::vector<std::pair<double, double>> coverWindows(const MotionSegment& segment, const NosePiece& piece,
+                                                    double horizon)
+{
+  if (!std::isfinite(piece.from) && !std::isfinite(piece.to))
+    return {{0.0, horizon}};
+  auto along = [&](const Eigen::Vector3d& v) { return piece.tangent.x() * v.x() + piece.tangent.y() * v.y(); };
+  const double c = along(segment.start.position), b = along(segment.start.velocity), a = along(segment.acceleration);
+  std::vector<double> points{0.0};
+  for (const double end : {piece.from, piece.to})
+    for (const double tau : quadraticRoots(c - end, b, a, 0.0, horizon))
+      points.push_back(tau);
+  points.push_back(horizon);
+  std::sort(points.begin(), points.end());
+  std::vector<std::pair<double, double>> windows;
+  for (std::size_t k = 1; k < points.size(); ++k)
+  {
+    const double middle = 0.5 * (points[k - 1] + points[k]);
+    if (piece.covers(segment.at(segment.start_time + middle).position.head<2>()))
+      windows.emplace_back(points[k - 1], points[k]);
+  }
+  return windows;
+}
+
+/// The segment from `offset` after its start on.
+MotionSegment laterPart(const MotionSegment& segment, double offset)
+{
+  if (offset == 0.0)
+    return segment;
+  MotionSegment part = segment;
+  part.start = segment.at(segment.start_time + offset);
+  part.start_time = segment.start_time + offset;
+  return part;
+}
+
+/// A straight piece's first contact: searched stretch by stretch where the piece covers the ball, so that a contact
+/// with its line beyond its ends (a ball in a pocket's mouth, on the line of the rail beside it) neither counts nor
+/// hides the contact that follows once the ball is alongside it.
+std::optional<NoseHit> lineContact(const MotionSegment& segment, const NosePiece& piece, const Table& table,
+                                   double radius, double reach, double horizon)
+{
+  for (const auto& [from, to] : coverWindows(segment, piece, horizon))
+  {
+    const MotionSegment part = laterPart(segment, from);
+    const auto hit = segment.phase == MotionPhase::Airborne
+                         ? airborneContact(part, piece.line, table, radius, to - from)
+                         : onClothContact(part, piece.line, reach, to - from);
+    if (hit)
+      return NoseHit{from + hit->time, hit->contact};
+  }
+  return std::nullopt;
 }
 
 std::optional<NoseHit> pieceContact(const MotionSegment& segment, const NosePiece& piece, const Table& table,
                                     double radius, double reach, double horizon)
 {
-  const bool airborne = segment.phase == MotionPhase::Airborne;
   if (piece.shape == NosePiece::Shape::Line)
-    return airborne ? airborneContact(segment, piece.line, table, radius, horizon)
-                    : onClothContact(segment, piece.line, reach, horizon);
-  return airborne ? airborneRoundContact(segment, piece, table, radius, horizon)
-                  : onClothRoundContact(segment, piece, reach, horizon);
+    return lineContact(segment, piece, table, radius, reach, horizon);
+  return segment.phase == MotionPhase::Airborne ? airborneRoundContact(segment, piece, table, radius, horizon)
+                                                : onClothRoundContact(segment, piece, reach, horizon);
 }
 }  // namespace
 

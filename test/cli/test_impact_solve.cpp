@@ -1029,3 +1029,39 @@ TEST(ImpactSolve, CalibrateBadInputNamesTheObservation)
     EXPECT_NE(run.output.find(std::string("invalid_argument: ") + key + ":"), std::string::npos) << run.output;
   }
 }
+
+TEST(ImpactSolve, UnderTheJawsAHopFromAPocketsMouthMeetsTheJawNotTheInsideOfTheRail)
+{
+  // Balls struck from a corner pocket's mouth, on the touching lines of both rails, hop along a rail. Each first
+  // meets the jaw's point it runs at (the rail's line beyond its end, touched at the start, is no contact and hides
+  // none): the one along the right rail comes back onto the table and rests there; the one jumped off the bottom
+  // rail's jaw flies over the right rail later and leaves the table, rather than dropping in the side pocket's
+  // region from 27 cm up beyond the rails.
+  const double x = 1.2424890021991204, y = 0.6074890021991205;
+  auto shot = [](double px, double py, const nlohmann::json& cue, const nlohmann::json& table)
+  {
+    nlohmann::json request = nlohmann::json::parse(
+        R"({"problem": "table_shot", "cue_mass": 0.54, "ball_mass": 0.17, "ball_radius": 0.028575,
+            "cue_contact": {"restitution": 0.75, "friction": 0.7, "eta2": 1.2},
+            "table_contact": {"restitution": 0.5, "friction": 0.2, "eta2": 10}, "stiffness_ratio": 0.8})");
+    request["balls"] = {{{"id", "cue"}, {"position", {px, py}}}};
+    request["cue"] = cue;
+    request["table"] = table;
+    const SolverRun run = runSolver(request.dump());
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    return run.exit_code == 0 ? nlohmann::json::parse(run.output)["balls"][0] : nlohmann::json{};
+  };
+  const auto along_rail =
+      shot(x, y, {{"phi_deg", -89.874013}, {"theta_deg", 8.714}, {"speed", 6}}, {{"pocket_model", "jaws"}});
+  ASSERT_GE(along_rail["events"].size(), 2u);
+  EXPECT_EQ(along_rail["events"][1]["type"], "cushion_hit");
+  EXPECT_EQ(along_rail["events"][1]["cushion"], 13);  // pocket.top_right.jaw.right.point
+  EXPECT_EQ(along_rail["outcome"], "rest");
+  const auto jumped =
+      shot(-x, -y, {{"phi_deg", -4.964226}, {"theta_deg", 40.3314}, {"speed", 7.7796}, {"a", 0.1893}, {"b", 0.2156}},
+           {{"pocket_model", "jaws"}, {"cushion", {{"restitution", 0.6673}, {"friction", 0.1086}}}});
+  ASSERT_GE(jumped["events"].size(), 2u);
+  EXPECT_EQ(jumped["events"][1]["type"], "cushion_hit");
+  EXPECT_EQ(jumped["events"][1]["cushion"], 1);  // pocket.bottom_left.jaw.bottom.point
+  EXPECT_EQ(jumped["outcome"], "off_table");
+}
