@@ -59,7 +59,7 @@ Status checkStart(const BallState& start, const BallProperties& ball, const Tabl
       return invalidArgument(field, "the ball overlaps a cushion");
   for (const DropRegion& drop : geometry.drops)
     if ((centre - drop.centre).norm() <= drop.radius)
-      return invalidArgument(field, "the ball is inside " + drop.name);
+      return invalidArgument(field, "the ball is inside " + drop.describe());
   return {};
 }
 

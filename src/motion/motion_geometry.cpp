@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "billiard_shot_planner/core/plane_geometry.hpp"
 #include "billiard_shot_planner/motion/table_outline.hpp"
 
 namespace billiard_shot_planner
@@ -17,11 +18,6 @@ constexpr double JOIN_OVERLAP = 1e-9;
 
 /// Distance (m) within which two segments' ends are one point of the outline.
 constexpr double SAME_POINT = 1e-9;
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b)
-{
-  return a.x() * b.y() - a.y() * b.x();
-}
 
 NosePiece linePiece(const NoseSegment& segment, int cushion)
 {
@@ -99,8 +95,7 @@ MotionGeometry circlesGeometry(const Table& table)
     geometry.noses.push_back(piece);
   }
   for (std::size_t i = 0; i < table.pockets.size(); ++i)
-    geometry.drops.push_back(
-        {table.pockets[i].centre, table.pockets[i].radius, "pocket " + std::to_string(i) + "'s capture region"});
+    geometry.drops.push_back({table.pockets[i].centre, table.pockets[i].radius, std::to_string(i), "capture region"});
   return geometry;
 }
 
@@ -147,7 +142,7 @@ MotionGeometry jawsGeometry(const TableOutline& outline)
   }
   for (const PocketOpening& pocket : outline.pockets)
   {
-    geometry.drops.push_back({pocket.drop_centre, pocket.drop_radius, "pocket " + pocket.id + "'s drop region"});
+    geometry.drops.push_back({pocket.drop_centre, pocket.drop_radius, pocket.id, "drop region"});
     geometry.throats.push_back(throatOf(outline, pocket));
   }
   return geometry;

@@ -75,7 +75,12 @@ struct DropRegion
 {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   double radius = 0.0;
-  std::string name;  ///< what an error calls it: "pocket 4's capture region", "pocket bottom_side's drop region"
+  std::string pocket;  ///< the pocket's index in Table::pockets ("4") or its outline id ("bottom_side")
+  const char* kind = "capture region";  ///< "capture region" or "drop region"
+
+  /// What an error calls it: "pocket 4's capture region", "pocket bottom_side's drop region". Composed only then:
+  /// the geometry is laid out for every simulation.
+  std::string describe() const { return "pocket " + pocket + "'s " + kind; }
 };
 
 /// A pocket's throat seen from above: the quadrilateral between its two jaw points and its facings' far ends, where

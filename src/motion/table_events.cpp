@@ -26,6 +26,27 @@ double locateEvent(Function f, double lo, double hi, double f_lo, double f_hi)
   return boost::math::tools::toms748_solve(f, lo, hi, f_lo, f_hi, tolerance, iterations).second;
 }
 
+/// The ball's centre's motion across the cloth relative to a fixed `point`: its offset, velocity and acceleration with
+/// z = 0, as the balls' contact search takes the motion of one ball relative to another at rest.
+struct PlanarMotion
+{
+  Eigen::Vector3d offset, velocity, acceleration;
+};
+
+PlanarMotion planarMotionFrom(const MotionSegment& segment, const Eigen::Vector2d& point)
+{
+  return {{segment.start.position.x() - point.x(), segment.start.position.y() - point.y(), 0.0},
+          {segment.start.velocity.x(), segment.start.velocity.y(), 0.0},
+          {segment.acceleration.x(), segment.acceleration.y(), 0.0}};
+}
+
+/// The first time in [0, horizon] at which the centre, moving as `m`, comes within `distance` of the point while
+/// approaching it (earliestBallContact's contact).
+std::optional<double> firstApproachWithin(const PlanarMotion& m, double distance, double horizon)
+{
+  return earliestBallContact(m.offset, m.velocity, m.acceleration, distance, horizon);
+}
+
 /// The roots in (lo, hi] of c + b τ + ½ a τ² = 0, in order.
 std::vector<double> quadraticRoots(double c, double b, double a, double lo, double hi)
 {
@@ -253,11 +274,7 @@ RadialMotion radialMotion(const MotionSegment& segment, const NosePiece& piece, 
 std::optional<NoseHit> onClothRoundContact(const MotionSegment& segment, const NosePiece& piece, double reach,
                                            double horizon)
 {
-  const Eigen::Vector3d from_centre(segment.start.position.x() - piece.centre.x(),
-                                    segment.start.position.y() - piece.centre.y(), 0.0);
-  const Eigen::Vector3d velocity(segment.start.velocity.x(), segment.start.velocity.y(), 0.0);
-  const Eigen::Vector3d acceleration(segment.acceleration.x(), segment.acceleration.y(), 0.0);
-  const auto tau = earliestBallContact(from_centre, velocity, acceleration, piece.radius + reach, horizon);
+  const auto tau = firstApproachWithin(planarMotionFrom(segment, piece.centre), piece.radius + reach, horizon);
   if (!tau)
     return std::nullopt;
   const RadialMotion m = radialMotion(segment, piece, *tau);
@@ -302,13 +319,10 @@ std::optional<NoseHit> airborneRoundContact(const MotionSegment& segment, const 
     return firstSampledContact(overlap, contact_at, 0.0, 0.0, horizon, RETURN_SAMPLES);
   }
   double start = 0.0;
-  const Eigen::Vector3d from_centre(segment.start.position.x() - piece.centre.x(),
-                                    segment.start.position.y() - piece.centre.y(), 0.0);
-  if (from_centre.norm() > piece.radius + radius)
+  const PlanarMotion planar = planarMotionFrom(segment, piece.centre);
+  if (planar.offset.norm() > piece.radius + radius)
   {
-    const Eigen::Vector3d velocity(segment.start.velocity.x(), segment.start.velocity.y(), 0.0);
-    const Eigen::Vector3d acceleration(segment.acceleration.x(), segment.acceleration.y(), 0.0);
-    const auto near = earliestBallContact(from_centre, velocity, acceleration, piece.radius + radius, horizon);
+    const auto near = firstApproachWithin(planar, piece.radius + radius, horizon);
     if (!near)
       return std::nullopt;
     start = *near;
@@ -318,7 +332,7 @@ std::optional<NoseHit> airborneRoundContact(const MotionSegment& segment, const 
   double end = horizon;
   if (segment.acceleration.head<2>().isZero())
   {
-    const Eigen::Vector2d q = from_centre.head<2>(), v = segment.start.velocity.head<2>();
+    const Eigen::Vector2d q = planar.offset.head<2>(), v = planar.velocity.head<2>();
     const double reach_out = piece.radius + radius;
     const std::vector<double> roots =
         quadraticRoots(q.squaredNorm() - reach_out * reach_out, 2.0 * q.dot(v), 2.0 * v.squaredNorm(),
@@ -453,16 +467,11 @@ std::optional<CushionCrossing> firstCushionHit(const MotionSegment& segment, con
 std::optional<double> firstCircleEntry(const MotionSegment& segment, const Eigen::Vector2d& centre, double radius,
                                        double horizon)
 {
-  Eigen::Vector3d from_centre = segment.start.position;
-  from_centre.head<2>() -= centre;
-  from_centre.z() = 0.0;
-  if (!(from_centre.norm() > radius))
+  const PlanarMotion planar = planarMotionFrom(segment, centre);
+  if (!(planar.offset.norm() > radius))
     return 0.0;
-  // The centre's motion relative to the region's is that of a ball relative to another at rest, in the plane: the
-  // contact search isolates the roots of the quartic |d|² − radius² exactly.
-  const Eigen::Vector3d velocity(segment.start.velocity.x(), segment.start.velocity.y(), 0.0);
-  const Eigen::Vector3d acceleration(segment.acceleration.x(), segment.acceleration.y(), 0.0);
-  return earliestBallContact(from_centre, velocity, acceleration, radius, horizon);
+  // The contact search isolates the roots of the quartic |d|² − radius² exactly.
+  return firstApproachWithin(planar, radius, horizon);
 }
 
 std::optional<Crossing> firstPocketEntry(const MotionSegment& segment, const MotionGeometry& geometry, double horizon)

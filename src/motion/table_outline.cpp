@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "billiard_shot_planner/core/plane_geometry.hpp"
+
 namespace billiard_shot_planner
 {
 namespace
@@ -12,11 +14,6 @@ namespace
 Eigen::Vector2d rotated(const Eigen::Vector2d& v, double angle)
 {
   return Eigen::Rotation2Dd(angle) * v;
-}
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b)
-{
-  return a.x() * b.y() - a.y() * b.x();
 }
 
 /// Where the outline meets a pocket: the pocket's middle point on the rectangle (a corner, or the middle of a long

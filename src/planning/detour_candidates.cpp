@@ -7,6 +7,8 @@
 #include <map>
 #include <tuple>
 
+#include "billiard_shot_planner/core/plane_geometry.hpp"
+
 namespace billiard_shot_planner
 {
 namespace planning
@@ -41,10 +43,6 @@ constexpr double JUMP_SPEED_SHARES[] = {0.6, 0.85};
 constexpr double MASSE_ELEVATIONS[] = {15.0 * DEGREE, 30.0 * DEGREE, 50.0 * DEGREE};
 constexpr double JUMP_ELEVATIONS[] = {30.0 * DEGREE, 40.0 * DEGREE};
 
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b)
-{
-  return a.x() * b.y() - a.y() * b.x();
-}
 double angleOf(const Eigen::Vector2d& v)
 {
   return std::atan2(v.y(), v.x());
