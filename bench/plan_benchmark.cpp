@@ -71,7 +71,8 @@ bsp::PlanRequest planRequest(const Layout& layout, int threads)
   bsp::PlanRequest request;
   request.balls = layout.balls;
   request.target = layout.target;
-  request.pocket = layout.pocket;
+  if (layout.pocket >= 0)
+    request.pocket = bsp::pocketId(CONFIGURATION.table.pockets, static_cast<std::size_t>(layout.pocket));
   request.budget = PLAN_BUDGET;
   request.seed = layout.seed;
   request.threads = threads;

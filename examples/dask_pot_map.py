@@ -23,7 +23,7 @@ import billiard_shot_planner as bsp
 from billiard_shot_planner.distributed import simulate_chunk
 
 OBJECT_BALL = (0.8, 0.3)
-POCKET = 3  # the (+x, +y) corner pocket, (1.27, 0.635)
+POCKET = "top_right"  # the (+x, +y) corner pocket, (1.27, 0.635)
 POCKET_CENTRE = (1.27, 0.635)
 
 
@@ -59,7 +59,7 @@ def pot_map(client, grid, samples, seed):
                            cue_ball, {"one": OBJECT_BALL}, configuration, pure=False) for cue_ball in grid]
     probabilities = []
     for batch in client.gather(tasks):
-        pots = (batch["pocket"][:, 1] == POCKET) & (batch["pocket"][:, 0] == -1)
+        pots = (batch["pocket"][:, 1] == POCKET) & (batch["pocket"][:, 0] == "")
         probabilities.append(float(np.mean(pots)))
     return probabilities, samples * len(grid)
 

@@ -61,30 +61,12 @@ ALCIATORE = {
 
 
 def pocket_places():
-    """The two pockets measured: index in the outline, middle of the mouth, centreline heading into the pocket."""
+    """The two pockets measured: id, middle of the mouth, centreline heading into the pocket."""
     half = 4.5625 * INCH / (2 * math.sqrt(2))  # the corner's jaw points stand mouth/sqrt(2) from the corner
     return {
-        "corner": {"index": 0, "mouth_middle": (-LENGTH / 2 + half, -WIDTH / 2 + half), "axis_deg": 225.0},
-        "side": {"index": 1, "mouth_middle": (0.0, -WIDTH / 2), "axis_deg": 270.0},
+        "corner": {"id": "bottom_left", "mouth_middle": (-LENGTH / 2 + half, -WIDTH / 2 + half), "axis_deg": 225.0},
+        "side": {"id": "bottom_side", "mouth_middle": (0.0, -WIDTH / 2), "axis_deg": 270.0},
     }
-
-
-def cushion_names():
-    """Ids of tableOutline(table).cushions in order (docs/tables.md, Ids): per pocket its outgoing jaw (facing, point),
-    the rail to the next pocket, and the next pocket's incoming jaw (point, facing)."""
-    pockets = [("bottom_left", "left", "bottom", "rail.bottom.left"),  # (pocket, jaw in, jaw out, rail after)
-               ("bottom_side", "left", "right", "rail.bottom.right"), ("bottom_right", "bottom", "right", "rail.right"),
-               ("top_right", "right", "top", "rail.top.right"), ("top_side", "right", "left", "rail.top.left"),
-               ("top_left", "top", "left", "rail.left")]
-    names = []
-    for k, (pocket, _, jaw_out, rail) in enumerate(pockets):
-        nxt, jaw_in = pockets[(k + 1) % 6][0], pockets[(k + 1) % 6][1]
-        names += [f"{pocket}.{jaw_out}.facing", f"{pocket}.{jaw_out}.point", rail,
-                  f"{nxt}.{jaw_in}.point", f"{nxt}.{jaw_in}.facing"]
-    return names
-
-
-CUSHIONS = cushion_names()
 
 
 def clear(point):
@@ -129,12 +111,12 @@ def summarise(answer, place, start):
     how far it rolled before it stopped sliding, and whether it stopped in the jaws (within a diameter of the mouth)."""
     ball = answer["balls"][0]
     events = ball["events"]
-    contacts = [CUSHIONS[e["cushion"]] for e in events if e["type"] == "cushion_hit"]
+    contacts = [e["cushion"] for e in events if e["type"] == "cushion_hit"]
     first = next((e for e in events if e["type"] == "pocketed"
-                  or e["type"] == "cushion_hit" and not CUSHIONS[e["cushion"]].startswith("rail")), None)
+                  or e["type"] == "cushion_hit" and not e["cushion"].startswith("rail")), None)
     roll = next((e for e in events if e["type"] == "slide_to_roll"), None)
     hung = ball["outcome"] == "rest" and math.dist(ball["final_position"][:2], place["mouth_middle"]) < 2 * RADIUS
-    return {"pot": ball["outcome"] == "pocketed" and ball["pocket"] == place["index"],
+    return {"pot": ball["outcome"] == "pocketed" and ball["pocket"] == place["id"],
             "outcome": "hung" if hung else ball["outcome"], "contacts": contacts,
             "arrival": math.hypot(*first["v"][:2]) if first else None,
             "roll_after": math.dist(roll["position"][:2], start) if roll else None}

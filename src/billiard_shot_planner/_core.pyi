@@ -67,14 +67,14 @@ class Event:
     position: npt.NDArray[np.float64]
     velocity: npt.NDArray[np.float64]
     angular_velocity: npt.NDArray[np.float64]
-    cushion: int
-    pocket: int
+    cushion: str
+    pocket: str
     ball: int
 
 class BallPath:
     id: str
     outcome: str
-    pocket: int
+    pocket: str
     final_position: npt.NDArray[np.float64]
     duration: float
     events: list[Event]
@@ -148,8 +148,8 @@ class PlannedShot:
     stroke: Stroke
     cue: Cue
     target: str
-    pocket: int
-    bank_cushion: int
+    pocket: str
+    bank_cushion: str
     cue_ball_path: str
     margin: float
     success_probability: float
@@ -170,7 +170,7 @@ def plan_shot(
     cue_ball: Sequence[float],
     balls: Mapping[str, Sequence[float]],
     target: str = "",
-    pocket: int = -1,
+    pocket: str = "",
     budget: float = 0.5,
     seed: int = 1,
     rollouts: int = 200,

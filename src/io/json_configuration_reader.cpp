@@ -19,12 +19,12 @@ bool startsWith(const std::string& text, const std::string& head)
   return text.rfind(head, 0) == 0;
 }
 
-/// One pocket: {"centre": [x, y], "radius": r}.
+/// One pocket: {"centre": [x, y], "radius": r}, with an optional "id".
 Expected<Pocket> pocketOf(const json& item, const std::string& field)
 {
   if (!item.is_object())
     return invalidArgument(field, "must be an object");
-  if (Status known = onlyKnownKeys(item, {"centre", "radius"}, field); !known)
+  if (Status known = onlyKnownKeys(item, {"id", "centre", "radius"}, field); !known)
     return known.error();
   auto centre = numbers(item, "centre");
   if (!centre)
@@ -34,7 +34,14 @@ Expected<Pocket> pocketOf(const json& item, const std::string& field)
   auto radius = number(item, "radius");
   if (!radius)
     return nested(field, radius.error());
-  return Pocket{{centre.value()[0], centre.value()[1]}, radius.value()};
+  Pocket pocket{{centre.value()[0], centre.value()[1]}, radius.value(), ""};
+  if (item.contains("id"))
+  {
+    if (!item["id"].is_string() || item["id"].get<std::string>().empty())
+      return invalidArgument(field + ".id", "must be a non-empty string");
+    pocket.id = item["id"].get<std::string>();
+  }
+  return pocket;
 }
 
 /// Reads each field the request has from its place, remembering the places it looked at.

@@ -55,9 +55,9 @@ json eventJson(const MotionEvent& e)
   json item = stateJson(e.state);
   item["t"] = e.time;
   item["type"] = toString(e.type);
-  if (e.cushion >= 0)
+  if (!e.cushion.empty())
     item["cushion"] = e.cushion;
-  if (e.pocket >= 0)
+  if (!e.pocket.empty())
     item["pocket"] = e.pocket;
   return item;
 }

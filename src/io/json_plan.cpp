@@ -119,6 +119,13 @@ Status readSearch(const json& request, PlanRequest& plan)
       return invalidArgument("target", "must be the id of a ball");
     plan.target = request.at("target").get<std::string>();
   }
+  if (request.contains("pocket"))
+  {
+    if (!request.at("pocket").is_string())
+      return invalidArgument("pocket",
+                             "must be the id of a pocket (\"top_right\", …; the table's ids: docs/tables.md)");
+    plan.pocket = request.at("pocket").get<std::string>();
+  }
   double budget_ms = plan.budget * 1e3, seed = plan.seed;
   if (Status status = readNumbers(request, {{"budget_ms", &budget_ms}, {"seed", &seed}}); !status)
     return status;
@@ -126,9 +133,8 @@ Status readSearch(const json& request, PlanRequest& plan)
     return invalidArgument("seed", "must be an integer in [0, 2^32 − 1]");
   plan.budget = budget_ms * 1e-3;
   plan.seed = static_cast<unsigned>(seed);
-  return firstError({readInteger(request, "pocket", -1, 1e6, plan.pocket),
-                     readInteger(request, "rollouts", 1, 1e5, plan.rollouts),
-                     readInteger(request, "threads", 0, 256, plan.threads)});
+  return firstError(
+      {readInteger(request, "rollouts", 1, 1e5, plan.rollouts), readInteger(request, "threads", 0, 256, plan.threads)});
 }
 
 Expected<PlanRequest> planRequest(const json& request, double radius)
@@ -172,7 +178,7 @@ json shotJson(const PlannedShot& shot)
 {
   return {{"target", shot.target},
           {"pocket", shot.pocket},
-          {"bank_cushion", shot.bank_cushion >= 0 ? json(shot.bank_cushion) : json(nullptr)},
+          {"bank_cushion", shot.bank_cushion.empty() ? json(nullptr) : json(shot.bank_cushion)},
           {"cue_ball_path", toString(shot.cue_ball_path)},
           {"cue", strokeJson(shot.stroke)},
           {"cue_pose", {{"tip", toVector(shot.cue.tip)}, {"direction", toVector(shot.cue.direction)}}},

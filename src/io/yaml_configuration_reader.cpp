@@ -20,25 +20,35 @@ YAML::Node at(const YAML::Node& node, const std::vector<std::string>& parts, std
   return at(node[parts[i]], parts, i + 1);
 }
 
-/// One [x, y, radius] or {centre: [x, y], radius: r}.
+/// One [x, y, radius (, id)] or {(id: name, )centre: [x, y], radius: r}.
 Expected<Pocket> pocketOf(const YAML::Node& node, const std::string& field)
 {
   try
   {
-    if (node.IsSequence() && node.size() == 3)
-      return Pocket{{node[0].as<double>(), node[1].as<double>()}, node[2].as<double>()};
-    if (node.IsMap() && node.size() == 2 && node["centre"] && node["radius"])
+    if (node.IsSequence() && (node.size() == 3 || node.size() == 4))
+      return Pocket{{node[0].as<double>(), node[1].as<double>()},
+                    node[2].as<double>(),
+                    node.size() == 4 ? node[3].as<std::string>() : std::string()};
+    const bool named = node.IsMap() && node["id"];
+    if (node.IsMap() && node.size() == (named ? 3U : 2U) && node["centre"] && node["radius"])
     {
       const YAML::Node centre = node["centre"];
       if (!centre.IsSequence() || centre.size() != 2)
         return invalidArgument(field + ".centre", "must be [x, y]");
-      return Pocket{{centre[0].as<double>(), centre[1].as<double>()}, node["radius"].as<double>()};
+      Pocket pocket{{centre[0].as<double>(), centre[1].as<double>()}, node["radius"].as<double>(), ""};
+      if (named && (!node["id"].IsScalar() || node["id"].Scalar().empty()))
+        return invalidArgument(field + ".id", "must be a non-empty name");
+      if (named)
+        pocket.id = node["id"].Scalar();
+      return pocket;
     }
   }
   catch (const YAML::Exception&)
   {
   }
-  return invalidArgument(field, "must be [x, y, radius] or {centre: [x, y], radius: r}, in numbers");
+  return invalidArgument(field,
+                         "must be [x, y, radius], [x, y, radius, id] or {id: name, centre: [x, y], radius: r} "
+                         "(the id optional), in numbers");
 }
 
 }  // namespace

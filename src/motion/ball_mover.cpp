@@ -112,7 +112,8 @@ Expected<bool> BallMover::runOwnEvent()
   switch (end_.event)
   {
     case MotionEventType::Pocketed:
-      trajectory_.events.push_back({end_.event, t, state, -1, end_.pocket});
+      trajectory_.events.push_back(
+          {end_.event, t, state, {}, geometry_.drops[static_cast<std::size_t>(end_.pocket)].pocket});
       trajectory_.outcome = MotionOutcome::Pocketed;
       status_ = Status::Ended;
       return true;
@@ -203,7 +204,7 @@ Expected<bool> BallMover::hitCushion(int piece, NoseContact contact, BallState& 
   const NosePiece& nose = geometry_.noses[static_cast<std::size_t>(piece)];
   if (contact == NoseContact::Over)
   {
-    trajectory_.events.push_back({MotionEventType::CushionHit, t, state, nose.cushion});
+    trajectory_.events.push_back({MotionEventType::CushionHit, t, state, geometry_.cushionId(nose)});
     trajectory_.outcome = MotionOutcome::OffTable;  // its bottom above the nose, the ball passes over it
     status_ = Status::Ended;
     return true;
@@ -219,7 +220,7 @@ Expected<bool> BallMover::hitCushion(int piece, NoseContact contact, BallState& 
   if (contact == NoseContact::Pressed ||
       pressedAgainst(piece, on_cloth, on_cloth ? outward_part(state.velocity) : approach))
   {
-    trajectory_.events.push_back({MotionEventType::CushionContact, t, state, nose.cushion});
+    trajectory_.events.push_back({MotionEventType::CushionContact, t, state, geometry_.cushionId(nose)});
     trajectory_.outcome = MotionOutcome::AgainstCushion;
     status_ = Status::Ended;
     return true;
@@ -236,7 +237,7 @@ Expected<bool> BallMover::hitCushion(int piece, NoseContact contact, BallState& 
   state.angular_velocity = result.value().angular_velocity;
   if (p_.planar)
     state.velocity.z() = 0.0;
-  trajectory_.events.push_back({MotionEventType::CushionHit, t, state, nose.cushion});
+  trajectory_.events.push_back({MotionEventType::CushionHit, t, state, geometry_.cushionId(nose)});
   last_hit_ = {piece, on_cloth, on_cloth ? -outward_part(state.velocity) : state.velocity.dot(normal)};
   return false;
 }

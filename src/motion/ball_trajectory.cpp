@@ -102,6 +102,12 @@ BallState BallTrajectory::at(double t) const
   return segment->at(std::clamp(t, segment->start_time, segment->end_time));
 }
 
+const std::string& BallTrajectory::pocket() const
+{
+  static const std::string none;
+  return outcome == MotionOutcome::Pocketed && !events.empty() ? events.back().pocket : none;
+}
+
 MotionPhase BallTrajectory::phaseAt(double t) const
 {
   const MotionSegment* segment = segmentAt(segments, t);

@@ -86,6 +86,7 @@ MotionGeometry circlesGeometry(const Table& table)
 {
   MotionGeometry geometry;
   const std::array<Nose, 4> rails = railNoses(table);
+  geometry.cushion_ids.assign(RAIL_IDS.begin(), RAIL_IDS.end());
   for (int rail = 0; rail < 4; ++rail)
   {
     NosePiece piece;
@@ -95,7 +96,8 @@ MotionGeometry circlesGeometry(const Table& table)
     geometry.noses.push_back(piece);
   }
   for (std::size_t i = 0; i < table.pockets.size(); ++i)
-    geometry.drops.push_back({table.pockets[i].centre, table.pockets[i].radius, std::to_string(i), "capture region"});
+    geometry.drops.push_back(
+        {table.pockets[i].centre, table.pockets[i].radius, pocketId(table.pockets, i), "capture region"});
   return geometry;
 }
 
@@ -132,6 +134,7 @@ MotionGeometry jawsGeometry(const TableOutline& outline)
   {
     const NoseSegment& segment = outline.cushions[i];
     const int cushion = static_cast<int>(i);
+    geometry.cushion_ids.push_back(segment.id);
     if (segment.shape == NoseSegment::Shape::Arc)
     {
       geometry.noses.push_back(arcPiece(segment, cushion));

@@ -43,8 +43,7 @@ struct NosePiece
   };
 
   Shape shape = Shape::Line;
-  /// The cushion the events name: a rail 0–3 under PocketModel::Circles, an index of tableOutline's cushions under
-  /// PocketModel::Jaws.
+  /// The cushion segment it belongs to: its index in MotionGeometry::cushion_ids.
   int cushion = -1;
   /// Line: its nose line, and where along `tangent` the piece runs (the circles' rails are infinite).
   Nose line{Eigen::Vector2d::UnitX(), 0.0};
@@ -75,10 +74,10 @@ struct DropRegion
 {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   double radius = 0.0;
-  std::string pocket;  ///< the pocket's index in Table::pockets ("4") or its outline id ("bottom_side")
+  std::string pocket;                   ///< the pocket's id ("bottom_side")
   const char* kind = "capture region";  ///< "capture region" or "drop region"
 
-  /// What an error calls it: "pocket 4's capture region", "pocket bottom_side's drop region". Composed only then:
+  /// What an error calls it: "pocket bottom_side's capture region" or "… drop region". Composed only then:
   /// the geometry is laid out for every simulation.
   std::string describe() const { return "pocket " + pocket + "'s " + kind; }
 };
@@ -97,6 +96,7 @@ struct Throat
 struct MotionGeometry
 {
   std::vector<NosePiece> noses;
+  std::vector<std::string> cushion_ids;  ///< the cushion segments' ids, which the events name
   std::vector<DropRegion> drops;
   std::vector<Throat> throats;
   double half_length = 0.0;
@@ -105,12 +105,17 @@ struct MotionGeometry
   /// Whether a ball's centre at `point` is off the table: beyond the rectangle of the rails' noses and in no
   /// pocket's throat.
   bool offTable(const Eigen::Vector3d& point) const;
+  /// The id of the cushion segment `piece` belongs to.
+  const std::string& cushionId(const NosePiece& piece) const
+  {
+    return cushion_ids[static_cast<std::size_t>(piece.cushion)];
+  }
 };
 
-/// The geometry of `table`'s pocket model: under Circles the four rails as infinite lines (numbered as railNoses) and
-/// the capture circles of Table::pockets; under Jaws tableOutline's segments (its lines and arcs, with a point at each
-/// sharp corner that juts into the table and at each free end of a facing) and its pockets' drop regions. Errors:
-/// tableOutline's.
+/// The geometry of `table`'s pocket model: under Circles the four rails as infinite lines (numbered as railNoses,
+/// named rail.left, rail.right, rail.bottom, rail.top) and the capture circles of Table::pockets; under Jaws
+/// tableOutline's segments (its lines and arcs, with a point at each sharp corner that juts into the table and at each
+/// free end of a facing) and its pockets' drop regions. Errors: tableOutline's.
 Expected<MotionGeometry> motionGeometry(const Table& table);
 
 }  // namespace detail

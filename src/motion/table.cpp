@@ -9,7 +9,21 @@ namespace billiard_shot_planner
 std::vector<Pocket> sixPockets(double length, double width)
 {
   const double x = 0.5 * length, y = 0.5 * width;
-  return {{{-x, -y}, 0.06}, {{x, -y}, 0.06}, {{-x, y}, 0.06}, {{x, y}, 0.06}, {{0.0, -y}, 0.065}, {{0.0, y}, 0.065}};
+  return {{{-x, -y}, 0.06, "bottom_left"}, {{x, -y}, 0.06, "bottom_right"},   {{-x, y}, 0.06, "top_left"},
+          {{x, y}, 0.06, "top_right"},     {{0.0, -y}, 0.065, "bottom_side"}, {{0.0, y}, 0.065, "top_side"}};
+}
+
+int pocketIndex(const std::vector<Pocket>& pockets, const std::string& id)
+{
+  for (std::size_t i = 0; i < pockets.size(); ++i)
+    if (pocketId(pockets, i) == id)
+      return static_cast<int>(i);
+  return -1;
+}
+
+std::string pocketId(const std::vector<Pocket>& pockets, std::size_t index)
+{
+  return pockets[index].id.empty() ? "pocket" + std::to_string(index) : pockets[index].id;
 }
 
 std::vector<Pocket> defaultPockets(const Table& table)
@@ -103,6 +117,10 @@ Status validate(const Table& table, const std::string& field)
                                     requirePositive(table.pockets[i].radius, name + ".radius")});
         !status)
       return status;
+    for (std::size_t j = 0; j < i; ++j)
+      if (pocketId(table.pockets, j) == pocketId(table.pockets, i))
+        return invalidArgument(name + ".id", "\"" + pocketId(table.pockets, i) + "\" names pocket " +
+                                                 std::to_string(j) + " too: each pocket needs its own id");
   }
   return validatePocketFit(table, field);
 }

@@ -33,7 +33,7 @@ std::vector<CushionTouch> cushionTouches(std::size_t ball, const Eigen::Vector3d
   for (int index : touchedNoses(centre, geometry, table, radius))
   {
     const NosePiece& piece = geometry.noses[static_cast<std::size_t>(index)];
-    touches.push_back({ball, cushionNormal(piece, table, centre), "cushion" + std::to_string(piece.cushion)});
+    touches.push_back({ball, cushionNormal(piece, table, centre), geometry.cushionId(piece)});
   }
   return touches;
 }

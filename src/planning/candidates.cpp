@@ -77,8 +77,8 @@ double frozenSpeed(double object_path, const PlanContext& context)
 
 std::vector<int> pocketsToTry(const PlanContext& context)
 {
-  if (context.request.pocket >= 0)
-    return {context.request.pocket};
+  if (!context.request.pocket.empty())
+    return {pocketIndex(context.configuration.table.pockets, context.request.pocket)};
   std::vector<int> all(context.configuration.table.pockets.size());
   for (std::size_t k = 0; k < all.size(); ++k)
     all[k] = static_cast<int>(k);

@@ -14,7 +14,7 @@ namespace planning
 struct Candidate
 {
   std::string target;
-  int pocket = -1;
+  int pocket = -1;  ///< index into Table::pockets
   /// The first aim: at the ghost ball (at a frozen target, along the line of centres turned towards the route), the
   /// lowest elevation whose cue clears, a centre hit.
   Stroke stroke;

@@ -70,6 +70,15 @@ Status checkBalls(const PlanRequest& r, const ShotConfiguration& c)
   return {};
 }
 
+/// "bottom_left, bottom_right, …": the ids a request may name.
+std::string pocketIds(const std::vector<Pocket>& pockets)
+{
+  std::string ids;
+  for (std::size_t i = 0; i < pockets.size(); ++i)
+    ids += (i ? ", " : "") + pocketId(pockets, i);
+  return ids;
+}
+
 Status checkSearch(const PlanRequest& r, const ShotConfiguration& c)
 {
   // The planner aims at the capture circles and measures its margins against them: it plans on the table whose
@@ -77,10 +86,9 @@ Status checkSearch(const PlanRequest& r, const ShotConfiguration& c)
   if (c.table.pocket_model != PocketModel::Circles)
     return invalidArgument("table.pocket_model",
                            "the planner aims at the capture circles (table.pockets): plan with \"circles\"");
-  if (r.pocket < -1 || r.pocket >= static_cast<int>(c.table.pockets.size()))
-    return invalidArgument("pocket", "must be −1 (any) or a pocket's index, 0 to " +
-                                         std::to_string(c.table.pockets.size() - 1) + ", got " +
-                                         std::to_string(r.pocket));
+  if (!r.pocket.empty() && pocketIndex(c.table.pockets, r.pocket) < 0)
+    return invalidArgument("pocket", "names no pocket of the table (" + pocketIds(c.table.pockets) + "), got \"" +
+                                         r.pocket + "\"; empty for any");
   if (r.cue_region)
     if (Status status = firstError({requireFinite(r.cue_region->centre, "cue_region.centre"),
                                     requirePositive(r.cue_region->radius, "cue_region.radius")});

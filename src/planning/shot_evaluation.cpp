@@ -35,7 +35,7 @@ double pocketMargin(const BallTrajectory& path, const Table& table, int index)
 {
   const Pocket& pocket = table.pockets[static_cast<std::size_t>(index)];
   const MotionEvent* dropped = pocketedEvent(path);
-  if (dropped && dropped->pocket == index)
+  if (dropped && dropped->pocket == pocketId(table.pockets, static_cast<std::size_t>(index)))
   {
     const Eigen::Vector2d to_centre = pocket.centre - dropped->state.position.head<2>();
     const Eigen::Vector2d velocity = dropped->state.velocity.head<2>();
@@ -50,10 +50,11 @@ double pocketMargin(const BallTrajectory& path, const Table& table, int index)
   return pocket.radius - closest;
 }
 
-bool dropsIn(const BallTrajectory& path, int pocket)
+/// Whether the ball dropped, into the pocket with id `pocket` when it names one.
+bool dropsIn(const BallTrajectory& path, const std::string& pocket)
 {
   const MotionEvent* dropped = pocketedEvent(path);
-  return dropped && (pocket < 0 || dropped->pocket == pocket);
+  return dropped && (pocket.empty() || dropped->pocket == pocket);
 }
 
 /// The request's pot, on a predicted table (the cue ball is ball 0).

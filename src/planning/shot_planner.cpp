@@ -102,8 +102,9 @@ PlannedShot plannedShot(const RefinedShot& shot, const PlanContext& context)
   planned.stroke = shot.candidate.stroke;
   planned.cue = placeStroke(planned.stroke, context.cue_ball, context.radius()).value();
   planned.target = shot.candidate.target;
-  planned.pocket = shot.candidate.pocket;
-  planned.bank_cushion = shot.candidate.bank_cushion;
+  planned.pocket = pocketId(context.configuration.table.pockets, static_cast<std::size_t>(shot.candidate.pocket));
+  if (shot.candidate.bank_cushion >= 0)
+    planned.bank_cushion = RAIL_IDS[static_cast<std::size_t>(shot.candidate.bank_cushion)];
   planned.cue_ball_path = shot.candidate.cue_ball_path;
   planned.margin = shot.evaluation.margin;
   return planned;
@@ -129,7 +130,7 @@ std::vector<PlannedShot> rankByRollouts(const std::vector<RefinedShot>& refined,
   for (std::size_t k = 0; k < refined.size() && shots.size() < RANKED_SHOTS && refined[k].evaluation.pots; ++k)
   {
     shots.push_back(plannedShot(refined[k], context));
-    rollouts.emplace_back(shots.back().stroke, shots.back().target, shots.back().pocket,
+    rollouts.emplace_back(shots.back().stroke, shots.back().target, refined[k].candidate.pocket,
                           context.request.seed + static_cast<unsigned>(k), context.request.rollouts, context);
   }
   const int threads = threadCount(context.request);
@@ -174,7 +175,8 @@ void playUntil(NoisyRollouts& rollouts, const PlanContext& context, Clock::time_
 
 NoisyRollouts confirmingRollouts(const PlannedShot& shot, unsigned stream, const PlanContext& context)
 {
-  return NoisyRollouts(shot.stroke, shot.target, shot.pocket, context.request.seed + CONFIRMATION_SEED_OFFSET + stream,
+  return NoisyRollouts(shot.stroke, shot.target, pocketIndex(context.configuration.table.pockets, shot.pocket),
+                       context.request.seed + CONFIRMATION_SEED_OFFSET + stream,
                        CONFIRMATION_FACTOR * context.request.rollouts, context);
 }
 
@@ -210,7 +212,8 @@ void confirm(std::vector<PlannedShot>& ranked, const PlanContext& context, Clock
     std::swap(ranked[0], ranked[1]);
 }
 
-std::string noPotExplanation(const CandidateSearch& search, const std::vector<RefinedShot>& refined)
+std::string noPotExplanation(const CandidateSearch& search, const std::vector<RefinedShot>& refined,
+                             const PlanContext& context)
 {
   std::string text = std::to_string(search.pairs) + " target–pocket routes: " + std::to_string(search.blocked) +
                      " with a ball in the way (tried last), " + std::to_string(search.too_thin) +
@@ -222,7 +225,8 @@ std::string noPotExplanation(const CandidateSearch& search, const std::vector<Re
   const RefinedShot& closest = refined.front();
   return "no shot found that pots (" + text + "; " + std::to_string(refined.size()) +
          " refined): the closest, ball \"" + closest.candidate.target + "\" into pocket " +
-         std::to_string(closest.candidate.pocket) + ", misses by " + std::to_string(-closest.evaluation.margin) + " m";
+         pocketId(context.configuration.table.pockets, static_cast<std::size_t>(closest.candidate.pocket)) +
+         ", misses by " + std::to_string(-closest.evaluation.margin) + " m";
 }
 }  // namespace
 
@@ -288,7 +292,7 @@ Expected<ShotPlan> planShot(const PlanRequest& request, const ShotConfiguration&
   }
   else
   {
-    plan.explanation = noPotExplanation(search, refined);
+    plan.explanation = noPotExplanation(search, refined, context);
     if (!refined.empty())
       plan.best = plannedShot(refined.front(), context);
   }

@@ -74,7 +74,7 @@ struct RowOutcome
   Eigen::Vector3d velocity = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   std::vector<Eigen::Vector3d> final_positions;
-  std::vector<int> pockets;
+  std::vector<std::string> pockets;  ///< each ball's pocket id, empty when it did not drop
 };
 
 /// A row's stroke placed at the cue ball and `solve`d there; either's error in the Python call's names.
@@ -106,11 +106,7 @@ RowOutcome simulateRow(const Stroke& stroke, const Layout& layout, const ShotCon
   for (const BallTrajectory& ball : shot.value().table.balls)
   {
     row.final_positions.push_back(ball.finalState().position);
-    int pocket = -1;
-    for (const MotionEvent& e : ball.events)
-      if (e.type == MotionEventType::Pocketed)
-        pocket = e.pocket;
-    row.pockets.push_back(pocket);
+    row.pockets.push_back(ball.pocket());
   }
   return row;
 }
@@ -221,11 +217,10 @@ py::dict simulateMany(const py::handle& strokes_given, const py::handle& cue_bal
   py::array_t<double> velocity({n, py::ssize_t{3}});
   py::array_t<double> angular_velocity({n, py::ssize_t{3}});
   py::array_t<double> final_position({n, b, py::ssize_t{3}});
-  py::array_t<int> pocket({n, b});
+  py::list pocket;
   auto v = velocity.mutable_unchecked<2>();
   auto w = angular_velocity.mutable_unchecked<2>();
   auto f = final_position.mutable_unchecked<3>();
-  auto p = pocket.mutable_unchecked<2>();
   for (py::ssize_t i = 0; i < n; ++i)
   {
     const RowOutcome& row = rows[static_cast<std::size_t>(i)];
@@ -234,21 +229,24 @@ py::dict simulateMany(const py::handle& strokes_given, const py::handle& cue_bal
       v(i, j) = row.velocity(j);
       w(i, j) = row.angular_velocity(j);
     }
+    py::list pockets;
     for (py::ssize_t k = 0; k < b; ++k)
     {
       const bool known = !row.error && static_cast<std::size_t>(k) < row.final_positions.size();
       for (py::ssize_t j = 0; j < 3; ++j)
         f(i, k, j) =
             known ? row.final_positions[static_cast<std::size_t>(k)](j) : std::numeric_limits<double>::quiet_NaN();
-      p(i, k) = known ? row.pockets[static_cast<std::size_t>(k)] : -1;
+      pockets.append(known ? row.pockets[static_cast<std::size_t>(k)] : std::string());
     }
+    pocket.append(pockets);
   }
   py::dict answer;
   answer["ids"] = layout.ids();
   answer["velocity"] = velocity;
   answer["angular_velocity"] = angular_velocity;
   answer["final_position"] = final_position;
-  answer["pocket"] = pocket;
+  // A string array (numpy's "<U"): compares element by element with a pocket's id.
+  answer["pocket"] = py::module_::import("numpy").attr("array")(pocket, py::arg("dtype") = "str");
   answer["error"] = errorsOf(rows);
   return answer;
 }
@@ -261,8 +259,8 @@ void bindBatches(py::module_& module)
              R"(Many strokes on one layout: predict_shot for each row of `strokes` (an (N, 5) array of phi, theta,
 speed, a, b), on `threads` threads (0: one per core) with the GIL released. Returns a dict of numpy arrays: ids (the
 balls' order, the cue ball first), velocity and angular_velocity (N, 3) of the cue ball after the strike,
-final_position (N, B, 3) and pocket (N, B; -1: not pocketed) of every ball, and error (N: None, or the row's Error;
-its row's numbers are NaN and -1). A bad array, layout or thread count raises Error.)");
+final_position (N, B, 3) and pocket (N, B strings: the pocket's id, "" when not pocketed) of every ball, and error
+(N: None, or the row's Error; its row's numbers are NaN and its pockets ""). A bad array, layout or thread count raises Error.)");
   module.def("strike_many", &strikeMany, py::arg("strokes"), py::arg("cue_ball"), py::arg("balls") = py::none(),
              py::arg("configuration") = ShotConfiguration{}, py::arg("threads") = 0,
              R"(Many strikes on one layout: strike() for each row of `strokes` (an (N, 5) array of phi, theta, speed,

@@ -28,13 +28,24 @@ const std::set<std::string> NODE_SETTINGS{"target_frame", "tf_timeout",       "s
 py::list pocketList(const std::vector<Pocket>& pockets)
 {
   py::list list;
-  for (const Pocket& pocket : pockets)
-    list.append(py::make_tuple(pocket.centre.x(), pocket.centre.y(), pocket.radius));
+  for (std::size_t i = 0; i < pockets.size(); ++i)
+    list.append(py::make_tuple(pockets[i].centre.x(), pockets[i].centre.y(), pockets[i].radius, pocketId(pockets, i)));
   return list;
 }
 
+/// One pocket from (x, y, radius) or (x, y, radius, id); py::cast_error for anything else.
+Pocket pocketOf(const py::tuple& item)
+{
+  if (item.size() != 3 && item.size() != 4)
+    throw py::cast_error("a pocket has 3 or 4 items");
+  Pocket pocket{{item[0].cast<double>(), item[1].cast<double>()}, item[2].cast<double>(), ""};
+  if (item.size() == 4)
+    pocket.id = item[3].cast<std::string>();
+  return pocket;
+}
+
 /// Writes every field into a dict by its parameter name, in the walk's order: numbers as float, flags as bool,
-/// choices as str, the pockets as a list of (x, y, radius).
+/// choices as str, the pockets as a list of (x, y, radius, id).
 class DictWriter final : public ConfigurationVisitor
 {
 public:
@@ -104,13 +115,13 @@ public:
     try
     {
       std::vector<Pocket> read;
-      for (const auto& [x, y, radius] : given.cast<std::vector<std::tuple<double, double, double>>>())
-        read.push_back({{x, y}, radius});
+      for (const py::handle item : given.cast<py::list>())
+        read.push_back(pocketOf(item.cast<py::tuple>()));
       pockets = read;
     }
     catch (const py::cast_error&)
     {
-      fail(invalidArgument(parameterName(path), "must be a list of (x, y, radius)"));
+      fail(invalidArgument(parameterName(path), "must be a list of (x, y, radius) or (x, y, radius, id)"));
     }
   }
   /// The first key of the dict that no field has.
@@ -269,7 +280,7 @@ void bindConfiguration(py::module_& module)
 motion model. Configuration() has the ROS node's defaults (config/default.yaml). Its fields are read and set by
 the node's parameter names: numbers (config["cue_contact/restitution"] = 0.7), flags (config["motion/planar"] =
 True), choices (config["table/cushion/law/type"] = "elastic_plastic", then its "table/cushion/law/yield_speed")
-and the pockets (config["table/pockets"] = [(x, y, radius), ...]). A value the model refuses raises Error naming
+and the pockets (config["table/pockets"] = [(x, y, radius, id), ...], the id optional). A value the model refuses raises Error naming
 the parameter and leaves the configuration as it was.)")
       .def(py::init<>())
       .def_static("load", &load,

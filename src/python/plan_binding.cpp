@@ -28,7 +28,7 @@ struct Plan
 struct PlanOptions
 {
   std::string target;
-  int pocket = -1;
+  std::string pocket;
   double budget = 0.5;
   unsigned seed = 1;
   int rollouts = 200;
@@ -132,8 +132,8 @@ void bindResults(py::module_& module)
       .def_readonly("stroke", &PlannedShot::stroke)
       .def_readonly("cue", &PlannedShot::cue)
       .def_readonly("target", &PlannedShot::target)
-      .def_readonly("pocket", &PlannedShot::pocket)
-      .def_readonly("bank_cushion", &PlannedShot::bank_cushion, "0: -x, 1: +x, 2: -y, 3: +y; -1: straight in")
+      .def_readonly("pocket", &PlannedShot::pocket, "the pocket's id (\"top_right\")")
+      .def_readonly("bank_cushion", &PlannedShot::bank_cushion, "the rail's id (\"rail.top\"); \"\": straight in")
       .def_property_readonly("cue_ball_path",
                              [](const PlannedShot& s) { return std::string(toString(s.cue_ball_path)); })
       .def_readonly("margin", &PlannedShot::margin, "m inside the pocket's capture circle, noise-free")
@@ -159,20 +159,21 @@ void bindPlanning(py::module_& module)
   bindResults(module);
   module.def(
       "plan_shot",
-      [](const py::handle& cue_ball, const py::object& balls, const std::string& target, int pocket, double budget,
-         unsigned seed, int rollouts, int threads, const ExecutionNoise& noise, const RobotLimits& limits,
-         bool target_first, bool only_target, const py::object& cue_region, const ShotConfiguration& configuration)
+      [](const py::handle& cue_ball, const py::object& balls, const std::string& target, const std::string& pocket,
+         double budget, unsigned seed, int rollouts, int threads, const ExecutionNoise& noise,
+         const RobotLimits& limits, bool target_first, bool only_target, const py::object& cue_region,
+         const ShotConfiguration& configuration)
       {
         const PlanOptions options{target, pocket, budget,       seed,        rollouts,  threads,
                                   noise,  limits, target_first, only_target, cue_region};
         return plan(cue_ball, balls, configuration, options);
       },
-      py::arg("cue_ball"), py::arg("balls"), py::arg("target") = "", py::arg("pocket") = -1, py::arg("budget") = 0.5,
+      py::arg("cue_ball"), py::arg("balls"), py::arg("target") = "", py::arg("pocket") = "", py::arg("budget") = 0.5,
       py::arg("seed") = 1, py::arg("rollouts") = 200, py::arg("threads") = 0, py::arg("noise") = ExecutionNoise{},
       py::arg("limits") = RobotLimits{}, py::arg("target_first") = false, py::arg("only_target") = false,
       py::arg("cue_region") = py::none(), py::arg("configuration") = ShotConfiguration{},
-      R"(The stroke that pots `target` (any object ball when empty) in `pocket` (an index of the table's pockets;
--1: any) from the cue ball at `cue_ball` among `balls` (id -> (x, y)), and how likely it is under `noise`
+      R"(The stroke that pots `target` (any object ball when empty) in `pocket` (a pocket's id, "top_right";
+"": any) from the cue ball at `cue_ball` among `balls` (id -> (x, y)), and how likely it is under `noise`
 (docs/planning.md): within `budget` s of wall-clock time, `rollouts` noisy rollouts per shot that pots on `threads`
 threads, reproducible for a seed. Options: the rules `target_first`, `only_target`; `cue_region` ((x, y), r) where the
 cue ball must stop. Raises Error.)");

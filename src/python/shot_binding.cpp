@@ -90,14 +90,6 @@ py::tuple sample(const BallPath& path, double spacing)
   return py::make_tuple(times, positions, phases);
 }
 
-int pocketOf(const BallTrajectory& trajectory)
-{
-  for (const MotionEvent& e : trajectory.events)
-    if (e.type == MotionEventType::Pocketed)
-      return e.pocket;
-  return -1;
-}
-
 void bindStroke(py::module_& module)
 {
   py::class_<Stroke>(
@@ -200,7 +192,7 @@ void bindResults(py::module_& module)
   py::class_<BallPath>(module, "BallPath", "One ball's path.")
       .def_readonly("id", &BallPath::id)
       .def_property_readonly("outcome", [](const BallPath& p) { return std::string(toString(p.trajectory.outcome)); })
-      .def_property_readonly("pocket", [](const BallPath& p) { return pocketOf(p.trajectory); })
+      .def_property_readonly("pocket", [](const BallPath& p) { return p.trajectory.pocket(); })
       .def_property_readonly("final_position", [](const BallPath& p) { return p.trajectory.finalState().position; })
       .def_property_readonly("duration", [](const BallPath& p) { return p.trajectory.duration(); })
       .def_property_readonly("events", [](const BallPath& p) { return p.trajectory.events; })

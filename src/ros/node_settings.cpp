@@ -16,7 +16,8 @@ namespace billiard_shot_planner
 {
 namespace
 {
-/// ~table/pockets, [[x, y, radius], …]; absent: the table's default ones for its size and layout (defaultPockets).
+/// ~table/pockets, [[x, y, radius, id], …] (the id optional); absent: the table's default ones for its size and layout
+/// (defaultPockets).
 Status readPockets(ParameterTree& parameters, const std::string& name, std::vector<Pocket>& pockets, const Table& table)
 {
   pockets = defaultPockets(table);
@@ -25,13 +26,13 @@ Status readPockets(ParameterTree& parameters, const std::string& name, std::vect
     return {};
   XmlRpc::XmlRpcValue list = *found;  // XmlRpcValue's conversions are not const
   if (list.getType() != XmlRpc::XmlRpcValue::TypeArray)
-    return invalidArgument(name, "must be a list of [x, y, radius]");
+    return invalidArgument(name, "must be a list of [x, y, radius, id] (the id optional)");
   pockets.clear();
   for (int i = 0; i < list.size(); ++i)
   {
     const std::string element = name + "[" + std::to_string(i) + "]";
-    if (list[i].getType() != XmlRpc::XmlRpcValue::TypeArray || list[i].size() != 3)
-      return invalidArgument(element, "must be [x, y, radius]");
+    if (list[i].getType() != XmlRpc::XmlRpcValue::TypeArray || list[i].size() < 3 || list[i].size() > 4)
+      return invalidArgument(element, "must be [x, y, radius] or [x, y, radius, id]");
     double values[3];
     for (int k = 0; k < 3; ++k)
     {
@@ -43,7 +44,13 @@ Status readPockets(ParameterTree& parameters, const std::string& name, std::vect
       else
         return invalidArgument(element, "must be [x, y, radius] numbers");
     }
-    pockets.push_back({{values[0], values[1]}, values[2]});
+    pockets.push_back({{values[0], values[1]}, values[2], ""});
+    if (list[i].size() == 4)
+    {
+      if (list[i][3].getType() != XmlRpc::XmlRpcValue::TypeString)
+        return invalidArgument(element + "[3]", "must be the pocket's id, a name");
+      pockets.back().id = static_cast<std::string>(list[i][3]);
+    }
   }
   return {};
 }
@@ -93,7 +100,7 @@ public:
     list << "[";
     for (std::size_t i = 0; i < pockets.size(); ++i)
       list << (i ? ", [" : "[") << pockets[i].centre.x() << ", " << pockets[i].centre.y() << ", " << pockets[i].radius
-           << "]";
+           << ", " << pocketId(pockets, i) << "]";
     text(path, list.str() + "]");
   }
 

@@ -88,19 +88,11 @@ std::vector<PathSample> pathMessage(const BallTrajectory& trajectory, double spa
   return path;
 }
 
-int pocketOf(const BallTrajectory& trajectory)
-{
-  for (const MotionEvent& e : trajectory.events)
-    if (e.type == MotionEventType::Pocketed)
-      return e.pocket;
-  return -1;
-}
-
 void fillTrajectory(ShotPrediction& m, const BallTrajectory& trajectory, const std::vector<std::string>& ids,
                     double spacing)
 {
   m.outcome = toString(trajectory.outcome);
-  m.pocket = pocketOf(trajectory);
+  m.pocket = trajectory.pocket();
   m.cushion_hits = 0;
   for (const MotionEvent& e : trajectory.events)
   {
@@ -119,7 +111,7 @@ void fillTable(ShotPrediction& m, const TableTrajectory& table, double spacing)
     BallPrediction ball;
     ball.id = table.ids[i];
     ball.outcome = toString(table.balls[i].outcome);
-    ball.pocket = pocketOf(table.balls[i]);
+    ball.pocket = table.balls[i].pocket();
     ball.final_position = toPoint(table.balls[i].finalState().position);
     for (const MotionEvent& e : table.balls[i].events)
       ball.events.push_back(eventMessage(e, table.ids));

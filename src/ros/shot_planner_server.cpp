@@ -23,9 +23,7 @@ Status readGoal(const PlanShotGoal& goal, const PlanningSettings& settings, Plan
 {
   request.cue_ball = goal.cue_ball.empty() ? CUE_BALL_ID : goal.cue_ball;
   request.target = goal.target;
-  if (goal.pocket_number < 0)
-    return invalidArgument("pocket_number", "must be 0 (any) or a pocket's index + 1");
-  request.pocket = goal.pocket_number - 1;
+  request.pocket = goal.pocket;
   if (!std::isfinite(goal.budget) || goal.budget < 0.0)
     return invalidArgument("budget", "must be >= 0 s (0: the node's ~planning/budget)");
   request.budget = goal.budget > 0.0 ? goal.budget : settings.budget;

@@ -568,6 +568,10 @@ TEST(ImpactSolve, AConfigurationSectionOfTheWrongKindIsRefused)
       {motion + R"("planar": "yes"})", "planar"},
       {motion + R"("table": {"pockets": [{"centre": [0, 0, 1], "radius": 0.05}]}})", "table.pockets[0].centre"},
       {motion + R"("table": {"pockets": [{"centre": [0, 0]}]}})", "table.pockets[0].radius"},
+      {motion + R"("table": {"pockets": [{"id": 4, "centre": [0, 0], "radius": 0.05}]}})", "table.pockets[0].id"},
+      {motion + R"("table": {"pockets": [{"id": "a", "centre": [0, 0], "radius": 0.05},
+                                         {"id": "a", "centre": [1, 0], "radius": 0.05}]}})",
+       "table.pockets[1].id"},
       {stroke(R"({"phi_deg": 0, "speed": 2})", R"(, "cue_contact": {"law": "elastic_plastic"})"), "cue_contact.law"},
       {stroke(R"({"phi_deg": 0, "speed": 2})", R"(, "cue_end_mass": "heavy")"), "cue_end_mass"},
   };
@@ -890,7 +894,9 @@ TEST(ImpactSolve, PlanShotBadInputNamesTheField)
   target["target"] = "seven";
   expectField(target, "target");
   auto pocket = planRequest();
-  pocket["pocket"] = 9;
+  pocket["pocket"] = "pocket9";
+  expectField(pocket, "pocket");
+  pocket["pocket"] = 3;  // an index, as before the pockets had ids
   expectField(pocket, "pocket");
   auto speed = planRequest();
   speed["limits"] = {{"speed", {3, 2}}};
@@ -1055,13 +1061,13 @@ TEST(ImpactSolve, UnderTheJawsAHopFromAPocketsMouthMeetsTheJawNotTheInsideOfTheR
       shot(x, y, {{"phi_deg", -89.874013}, {"theta_deg", 8.714}, {"speed", 6}}, {{"pocket_model", "jaws"}});
   ASSERT_GE(along_rail["events"].size(), 2u);
   EXPECT_EQ(along_rail["events"][1]["type"], "cushion_hit");
-  EXPECT_EQ(along_rail["events"][1]["cushion"], 13);  // pocket.top_right.jaw.right.point
+  EXPECT_EQ(along_rail["events"][1]["cushion"], "pocket.top_right.jaw.right.point");
   EXPECT_EQ(along_rail["outcome"], "rest");
   const auto jumped =
       shot(-x, -y, {{"phi_deg", -4.964226}, {"theta_deg", 40.3314}, {"speed", 7.7796}, {"a", 0.1893}, {"b", 0.2156}},
            {{"pocket_model", "jaws"}, {"cushion", {{"restitution", 0.6673}, {"friction", 0.1086}}}});
   ASSERT_GE(jumped["events"].size(), 2u);
   EXPECT_EQ(jumped["events"][1]["type"], "cushion_hit");
-  EXPECT_EQ(jumped["events"][1]["cushion"], 1);  // pocket.bottom_left.jaw.bottom.point
+  EXPECT_EQ(jumped["events"][1]["cushion"], "pocket.bottom_left.jaw.bottom.point");
   EXPECT_EQ(jumped["outcome"], "off_table");
 }

@@ -34,7 +34,40 @@ TEST(TableYaml, ShippedNineFootTableEqualsTheDefaults)
   {
     EXPECT_EQ(t.pockets[i].centre, d.pockets[i].centre) << i;
     EXPECT_EQ(t.pockets[i].radius, d.pockets[i].radius) << i;
+    EXPECT_EQ(t.pockets[i].id, d.pockets[i].id) << i;
   }
+}
+
+// A capture circle's id: its own from a map or a list, else its place; the six defaults carry the outline's ids, so a
+// pocket is named alike under either pocket model; one id twice is refused naming the second.
+TEST(TableYaml, PocketsCarryIdsAndOneIdNamesOnePocket)
+{
+  const bsp::Table defaults;
+  const bsp::TableOutline outline = bsp::tableOutline(defaults).value();
+  for (const bsp::Pocket& circle : defaults.pockets)
+  {
+    // The opening whose mouth is nearest the capture circle's centre has its id.
+    const bsp::PocketOpening* nearest = &outline.pockets.front();
+    for (const bsp::PocketOpening& opening : outline.pockets)
+      if ((opening.mouthMiddle() - circle.centre).norm() < (nearest->mouthMiddle() - circle.centre).norm())
+        nearest = &opening;
+    EXPECT_EQ(nearest->id, circle.id);
+  }
+  const auto named = bsp::parseTableYaml(
+      "table: {pockets: [{id: far, centre: [1.27, 0.635], radius: 0.06}, [-1.27, 0.635, 0.06, near], [0, 0.635, "
+      "0.065]]}");
+  ASSERT_TRUE(named.ok()) << named.error().describe();
+  EXPECT_EQ(bsp::pocketId(named.value().pockets, 0), "far");
+  EXPECT_EQ(bsp::pocketId(named.value().pockets, 1), "near");
+  EXPECT_EQ(bsp::pocketId(named.value().pockets, 2), "pocket2");
+  EXPECT_EQ(bsp::pocketIndex(named.value().pockets, "near"), 1);
+  EXPECT_EQ(bsp::pocketIndex(named.value().pockets, "top_right"), -1);
+  EXPECT_EQ(bsp::parseTableYaml("table: {pockets: [[1.27, 0.635, 0.06, a], [-1.27, 0.635, 0.06, a]]}").error().field,
+            "table.pockets[1].id");
+  EXPECT_EQ(bsp::parseTableYaml("table: {pockets: [[1.27, 0.635, 0.06, pocket1], [-1.27, 0.635, 0.06]]}").error().field,
+            "table.pockets[1].id");
+  EXPECT_EQ(bsp::parseTableYaml("table: {pockets: [{id: '', centre: [1.27, 0.635], radius: 0.06}]}").error().field,
+            "table.pockets[0].id");
 }
 
 TEST(TableYaml, PartialFilesKeepDefaultsAndBadOnesNameTheField)

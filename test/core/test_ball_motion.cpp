@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "../fixtures/rail_ids.hpp"
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "billiard_shot_planner/scenarios/ball_table_impact.hpp"
 #include "billiard_shot_planner/scenarios/cushion_impact.hpp"
@@ -75,7 +76,7 @@ std::vector<double> reboundSpeeds(const bsp::BallTrajectory& t, int rail)
 {
   std::vector<double> speeds;
   for (const auto& e : t.events)
-    if (e.type == Type::CushionHit && e.cushion == rail)
+    if (e.type == Type::CushionHit && test_fixtures::railOf(e.cushion) == rail)
       speeds.push_back(std::abs(e.state.velocity(rail / 2)));
   return speeds;
 }
@@ -249,7 +250,7 @@ TEST(Cushion, StraightInRebondsStraightBackSlower)
   const auto t = predicted(stateOf({2.0, 0, 0}, {0, 2.0 / 0.0286, 0}), table);  // rolling along +x
   const auto* hit = firstEvent(t, Type::CushionHit);
   ASSERT_TRUE(hit);
-  EXPECT_EQ(hit->cushion, 1);
+  EXPECT_EQ(hit->cushion, "rail.right");
   EXPECT_LT(hit->state.velocity.x(), 0.0);
   const double before = t.at(hit->time - 1e-9).velocity.x();
   EXPECT_LT(-hit->state.velocity.x(), before);
@@ -497,7 +498,8 @@ TEST(Cushion, RandomShotsAlongARailNeverEnterTheCushion)
       continue;
     ++against;
     EXPECT_EQ(t.value().events.back().type, Type::CushionContact) << k;
-    const std::vector<double> rebounds = reboundSpeeds(t.value(), t.value().events.back().cushion);
+    const std::vector<double> rebounds =
+        reboundSpeeds(t.value(), test_fixtures::railOf(t.value().events.back().cushion));
     ASSERT_FALSE(rebounds.empty()) << k;
     EXPECT_LT(rebounds.back(), 1e-6) << k;
   }
@@ -556,7 +558,7 @@ TEST(Cushion, ABallPressedIntoTheRailByItsSpinEndsAgainstIt)
   const auto t = predicted(stateOf({0.3, 0.0, 0.0}, {-100.0, 0.0, 0.0}, {-0.8, 0.635 - 0.0286 - 0.002}), table, p);
   EXPECT_EQ(t.outcome, bsp::MotionOutcome::AgainstCushion);
   ASSERT_EQ(t.events.back().type, Type::CushionContact);
-  EXPECT_EQ(t.events.back().cushion, 3);
+  EXPECT_EQ(t.events.back().cushion, "rail.top");
   // A Zeno sequence: every rebound from the rail slower than the one before, the last one below the 1e-6 m/s that
   // makes the contact sustained.
   const std::vector<double> rebounds = reboundSpeeds(t, 3);
@@ -629,7 +631,7 @@ TEST(Cushion, AirborneBallsTouchTheNoseAtOneRadiusOrPassOverIt)
     {
       if (e.type != Type::CushionHit)
         continue;
-      const int axis = e.cushion / 2;
+      const int axis = test_fixtures::railOf(e.cushion) / 2;
       const double edge = 0.5 * (axis == 0 ? table.length : table.width);
       const double inside = edge - std::abs(e.state.position(axis));
       const double above = e.state.position.z() - table.cushion_height;
@@ -727,7 +729,7 @@ TEST(Pocket, StraightAtACornerIsPocketedBesideItIsNot)
   const Eigen::Vector3d v(3 * aim.x(), 3 * aim.y(), 0);
   const auto in = predicted(stateOf(v, Eigen::Vector3d::UnitZ().cross(v) / 0.0286, start), table);
   EXPECT_EQ(in.outcome, bsp::MotionOutcome::Pocketed);
-  EXPECT_EQ(in.events.back().pocket, 3);
+  EXPECT_EQ(in.events.back().pocket, "top_right");
   // Aimed at a point on the long cushion 0.25 m before the corner.
   const Eigen::Vector2d beside = (Eigen::Vector2d(corner.x() - 0.25, corner.y()) - start).normalized();
   const Eigen::Vector3d w(1.0 * beside.x(), 1.0 * beside.y(), 0);

@@ -132,7 +132,7 @@ TEST(FrozenShots, CueBallFrozenToARail)
   {
     const auto outcome = bsp::predictShot(stroke(cue_ball, phi_deg, 2.0), CONFIGURATION);
     ASSERT_TRUE(outcome.ok()) << outcome.error().describe();
-    const bsp::StrikeContact* rail = contactNamed(outcome.value().strike, "cue-cushion3");
+    const bsp::StrikeContact* rail = contactNamed(outcome.value().strike, "cue-rail.top");
     ASSERT_NE(rail, nullptr) << "phi " << phi_deg;
     if (phi_deg == 0.0)
       EXPECT_LT(rail->impulse.norm(), 1e-12);
@@ -159,7 +159,7 @@ TEST(FrozenShots, JammedCueBallIsABoundedImpact)
   EXPECT_LT(r.cue_velocity, 0.0);  // the cue recoils
   EXPECT_LT(r.impact.final_kinetic_energy, r.impact.initial_kinetic_energy);
   ASSERT_EQ(r.other_balls.size(), 2u);
-  const bsp::StrikeContact* rail = contactNamed(r, "two-cushion3");
+  const bsp::StrikeContact* rail = contactNamed(r, "two-rail.top");
   ASSERT_NE(rail, nullptr);
   EXPECT_LT(rail->impulse.y(), 0.0);
   for (const bsp::StruckBall& ball : r.other_balls)

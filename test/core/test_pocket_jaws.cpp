@@ -47,22 +47,6 @@ bsp::BallTrajectory predicted(const bsp::BallState& start, const bsp::Table& tab
   return result.ok() ? result.value() : bsp::BallTrajectory{};
 }
 
-int pocketIndex(const bsp::TableOutline& outline, const std::string& id)
-{
-  for (std::size_t i = 0; i < outline.pockets.size(); ++i)
-    if (outline.pockets[i].id == id)
-      return static_cast<int>(i);
-  return -1;
-}
-
-int cushionIndex(const bsp::TableOutline& outline, const std::string& id)
-{
-  for (std::size_t i = 0; i < outline.cushions.size(); ++i)
-    if (outline.cushions[i].id == id)
-      return static_cast<int>(i);
-  return -1;
-}
-
 const bsp::MotionEvent* firstOf(const bsp::BallTrajectory& path, bsp::MotionEventType type)
 {
   for (const bsp::MotionEvent& event : path.events)
@@ -130,7 +114,7 @@ TEST(PocketJaws, ASlowBallAlongACornerPocketsAxisDropsForEveryOffsetThatClearsTh
       EXPECT_EQ(path.outcome, bsp::MotionOutcome::Pocketed) << id << " offset " << offset;
       const bsp::MotionEvent* dropped = firstOf(path, bsp::MotionEventType::Pocketed);
       ASSERT_NE(dropped, nullptr) << id << " offset " << offset;
-      EXPECT_EQ(dropped->pocket, pocketIndex(outline, id));
+      EXPECT_EQ(dropped->pocket, id);
       EXPECT_TRUE(pocket.drops(dropped->state.position.head<2>() + 1e-9 * pocket.axis));
     }
   }
@@ -144,16 +128,15 @@ TEST(PocketJaws, ABallThatMeetsAJawPointHeadOnComesStraightBack)
   const bsp::TableOutline outline = bsp::tableOutline(table).value();
   for (const std::string id : {"pocket.bottom_left.jaw.bottom.point", "pocket.bottom_side.jaw.right.point"})
   {
-    const int index = cushionIndex(outline, id);
-    ASSERT_GE(index, 0) << id;
-    const bsp::NoseSegment& arc = outline.cushions[static_cast<std::size_t>(index)];
+    ASSERT_NE(outline.cushion(id), nullptr) << id;
+    const bsp::NoseSegment& arc = *outline.cushion(id);
     const Vector2d middle = Eigen::Rotation2Dd(0.5 * arc.sweep) * (arc.start - arc.centre).normalized();
     const Vector2d from = arc.centre + (arc.radius + 0.1) * middle;
     const bsp::BallTrajectory path = predicted(rolling(from, -middle, 0.8), table);
     EXPECT_NE(path.outcome, bsp::MotionOutcome::Pocketed) << id;
     const bsp::MotionEvent* hit = firstOf(path, bsp::MotionEventType::CushionHit);
     ASSERT_NE(hit, nullptr) << id;
-    EXPECT_EQ(hit->cushion, index) << id;
+    EXPECT_EQ(hit->cushion, id);
     const double reach = bsp::cushionReach(table, R);
     EXPECT_NEAR((hit->state.position.head<2>() - arc.centre).norm(), arc.radius + reach, 1e-9) << id;
     const Vector2d v = hit->state.velocity.head<2>();
@@ -174,7 +157,7 @@ TEST(PocketJaws, ABallRollingAlongARailDropsInTheCornerPocket)
     EXPECT_EQ(path.outcome, bsp::MotionOutcome::Pocketed) << speed;
     const bsp::MotionEvent* dropped = firstOf(path, bsp::MotionEventType::Pocketed);
     ASSERT_NE(dropped, nullptr) << speed;
-    EXPECT_EQ(dropped->pocket, pocketIndex(outline, "bottom_left")) << speed;
+    EXPECT_EQ(dropped->pocket, "bottom_left") << speed;
   }
 }
 
@@ -192,8 +175,7 @@ TEST(PocketJaws, AFastBallAlongARailIntoTheSidePocketRunsOffItsFarJaw)
   EXPECT_NE(path.outcome, bsp::MotionOutcome::Pocketed);
   const bsp::MotionEvent* hit = firstOf(path, bsp::MotionEventType::CushionHit);
   ASSERT_NE(hit, nullptr);
-  const std::string id = outline.cushions[static_cast<std::size_t>(hit->cushion)].id;
-  EXPECT_EQ(id.rfind("pocket.bottom_side.jaw.right.", 0), 0u) << id;
+  EXPECT_EQ(hit->cushion.rfind("pocket.bottom_side.jaw.right.", 0), 0u) << hit->cushion;
   EXPECT_GT(hit->state.velocity.y(), 0.0) << "back onto the table";
 }
 
@@ -209,8 +191,8 @@ TEST(PocketJaws, AwayFromThePocketsTheRailsAreTheCirclesModels)
   ASSERT_NE(hit_a, nullptr);
   ASSERT_NE(hit_b, nullptr);
   const bsp::TableOutline outline = bsp::tableOutline(jaws).value();
-  EXPECT_EQ(hit_a->cushion, 2);  // −y
-  EXPECT_EQ(outline.cushions[static_cast<std::size_t>(hit_b->cushion)].id, "rail.bottom.left");
+  EXPECT_EQ(hit_a->cushion, "rail.bottom");
+  EXPECT_EQ(hit_b->cushion, "rail.bottom.left");
   EXPECT_NEAR(hit_a->time, hit_b->time, 1e-12);
   EXPECT_NEAR((hit_a->state.velocity - hit_b->state.velocity).norm(), 0.0, 1e-12);
   EXPECT_NEAR((hit_a->state.angular_velocity - hit_b->state.angular_velocity).norm(), 0.0, 1e-10);
@@ -241,8 +223,7 @@ namespace
 /// Whether a ball rolling along the line at `angle` (rad) from the pocket's centreline, `offset` across it from the
 /// line through the mouth's middle (positive towards the far jaw), drops in that pocket. It starts 0.5 m before the
 /// mouth with the speed that leaves it about `arrival` m/s there.
-bool pots(const bsp::Table& table, const bsp::PocketOpening& pocket, int index, double angle, double offset,
-          double arrival)
+bool pots(const bsp::Table& table, const bsp::PocketOpening& pocket, double angle, double offset, double arrival)
 {
   const Vector2d direction = Eigen::Rotation2Dd(angle) * pocket.axis;
   const Vector2d across(direction.y(), -direction.x());
@@ -254,7 +235,7 @@ bool pots(const bsp::Table& table, const bsp::PocketOpening& pocket, int index, 
   if (!path.ok())
     return false;  // a line that cannot start on the cloth
   const bsp::MotionEvent* dropped = firstOf(path.value(), bsp::MotionEventType::Pocketed);
-  return dropped && dropped->pocket == index;
+  return dropped && dropped->pocket == pocket.id;
 }
 
 /// The effective target (m): the width of the band of parallel lines that pot, each edge bisected to 0.05 mm from the
@@ -263,9 +244,8 @@ double effectiveTarget(const bsp::Table& table, const std::string& id, double an
 {
   const bsp::TableOutline outline = bsp::tableOutline(table).value();
   const bsp::PocketOpening& pocket = *outline.pocket(id);
-  const int index = pocketIndex(outline, id);
   const double angle = angle_deg * M_PI / 180.0;
-  EXPECT_TRUE(pots(table, pocket, index, angle, 0.0, arrival)) << id << " " << angle_deg;
+  EXPECT_TRUE(pots(table, pocket, angle, 0.0, arrival)) << id << " " << angle_deg;
   double width = 0.0;
   for (const double side : {-1.0, 1.0})
   {
@@ -273,7 +253,7 @@ double effectiveTarget(const bsp::Table& table, const std::string& id, double an
     while (std::abs(outside - inside) > 5e-5)
     {
       const double middle = 0.5 * (inside + outside);
-      (pots(table, pocket, index, angle, middle, arrival) ? inside : outside) = middle;
+      (pots(table, pocket, angle, middle, arrival) ? inside : outside) = middle;
     }
     width += std::abs(inside);
   }
@@ -339,8 +319,7 @@ TEST(PocketJaws, RandomShotsAtThePocketsNeverEnterACushionOrAJaw)
     }
     ++shots;
     for (const bsp::MotionEvent& event : path.value().events)
-      if (event.type == bsp::MotionEventType::CushionHit && event.cushion >= 0 &&
-          outline.cushions[static_cast<std::size_t>(event.cushion)].id.rfind("pocket.", 0) == 0)
+      if (event.type == bsp::MotionEventType::CushionHit && event.cushion.rfind("pocket.", 0) == 0)
         ++hit_jaws;
     for (const bsp::TrajectorySample& sample : path.value().sample(0.002))
     {
@@ -367,8 +346,9 @@ TEST(PocketJaws, RandomShotsAtThePocketsNeverEnterACushionOrAJaw)
     {
       ++dropped;
       const bsp::MotionEvent& last = path.value().events.back();
-      EXPECT_TRUE(outline.pockets[static_cast<std::size_t>(last.pocket)].drops(last.state.position.head<2>() +
-                                                                               1e-9 * last.state.velocity.head<2>()))
+      ASSERT_NE(outline.pocket(last.pocket), nullptr) << k << " " << last.pocket;
+      EXPECT_TRUE(
+          outline.pocket(last.pocket)->drops(last.state.position.head<2>() + 1e-9 * last.state.velocity.head<2>()))
           << k;
     }
   }

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "../../src/motion/table_events.hpp"
+#include "../fixtures/rail_ids.hpp"
 #include "billiard_shot_planner/motion/ball_motion.hpp"
 #include "billiard_shot_planner/scenarios/cushion_impact.hpp"
 #include "billiard_shot_planner/shot/shot_prediction.hpp"
@@ -111,7 +112,7 @@ TEST(RailContact, ABallTouchingARailAndMovingIntoItHitsItAtOnce)
       ASSERT_GE(t.events.size(), 2u);
       const bsp::MotionEvent& hit = t.events[1];
       EXPECT_EQ(hit.type, Type::CushionHit) << c.rail << " " << gap;
-      EXPECT_EQ(hit.cushion, c.rail);
+      EXPECT_EQ(test_fixtures::railOf(hit.cushion), c.rail);
       EXPECT_LT(hit.time, 1e-12);
       EXPECT_LT(speedInto(c.rail, hit.state.velocity), 0.0) << "it rebounds";
       EXPECT_LE(deepestOverlap(t, table), 1e-9);
@@ -150,7 +151,7 @@ TEST(RailContact, ABallTouchingARailPressedIntoItByItsSpinEndsAgainstIt)
   const auto t = predicted(start, table);
   EXPECT_EQ(t.outcome, bsp::MotionOutcome::AgainstCushion);
   ASSERT_EQ(t.events.back().type, Type::CushionContact);
-  EXPECT_EQ(t.events.back().cushion, 3);
+  EXPECT_EQ(t.events.back().cushion, "rail.top");
   EXPECT_EQ(t.duration(), 0.0);
   EXPECT_LE(deepestOverlap(t, table), 1e-9);
 }
@@ -194,7 +195,7 @@ TEST(RailContact, AShotOfABallFrozenToTheRailStaysOnTheTable)
     // The rail is part of the strike (one impact with the cue's and the cloth's contacts): its reaction pushes the
     // ball off the rail in the strike, and the motion starts with no second impact at t = 0.
     for (const bsp::StrikeContact& contact : outcome.value().strike.contacts)
-      pushed_by_rail += contact.name == "cue-cushion3" && contact.impulse.y() < 0.0;
+      pushed_by_rail += contact.name == "cue-rail.top" && contact.impulse.y() < 0.0;
     EXPECT_FALSE(t.events.size() > 1 && t.events[1].type == Type::CushionHit && t.events[1].time == 0.0);
   }
   EXPECT_GE(pushed_by_rail, 3);  // the three strokes into the rail at least
@@ -252,7 +253,7 @@ TEST(RailContact, RandomBallsTouchingARailNeverCrossIt)
     if (t.outcome == bsp::MotionOutcome::OffTable)
     {
       ++off_table;
-      const int axis = last.cushion / 2;
+      const int axis = test_fixtures::railOf(last.cushion) / 2;
       EXPECT_NEAR(std::abs(last.state.position(axis)), halfExtent(table, axis), 1e-9) << k;
       EXPECT_GE(last.state.position.z() - R, table.cushion_height - 1e-9) << k << ": its bottom above the nose";
     }
@@ -260,7 +261,8 @@ TEST(RailContact, RandomBallsTouchingARailNeverCrossIt)
     const Eigen::Vector3d v_start = p.planar ? Eigen::Vector3d(v.x(), v.y(), 0.0) : v;
     const double approach = -v_start.dot(
         bsp::detail::cushionNormal(bsp::detail::motionGeometry(table).value().noses[rail], table, start.position));
-    const bool met_at_once = t.events.size() > 1 && t.events[1].time == 0.0 && t.events[1].cushion == rail &&
+    const bool met_at_once = t.events.size() > 1 && t.events[1].time == 0.0 &&
+                             test_fixtures::railOf(t.events[1].cushion) == rail &&
                              (t.events[1].type == Type::CushionHit || t.events[1].type == Type::CushionContact);
     if (approach > 1e-6)
     {
@@ -322,7 +324,7 @@ TEST(RailContact, ABallRidingALowNoseInTheAirNeverEntersIt)
   EXPECT_EQ(t.outcome, bsp::MotionOutcome::AgainstCushion);
   const bsp::MotionEvent& last = t.events.back();
   EXPECT_EQ(last.type, Type::CushionContact);
-  EXPECT_EQ(last.cushion, 0);
+  EXPECT_EQ(last.cushion, "rail.left");
   EXPECT_GT(last.state.position.z(), R + 1e-3);  // in the air, on the nose
   EXPECT_GT(last.state.position.x(), -0.5 * table.length);
   // Every landing is on the cloth inside the cushions' inner lines.
@@ -401,7 +403,7 @@ TEST(RailContact, InThePlaneABallRollingIntoALowNoseStaysOnTheTable)
     if (e.type == Type::CushionHit)
     {
       ++hits;
-      EXPECT_EQ(e.cushion, 3);
+      EXPECT_EQ(e.cushion, "rail.top");
     }
   EXPECT_GE(hits, 2);
 }

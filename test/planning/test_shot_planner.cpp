@@ -14,7 +14,8 @@ namespace bsp = billiard_shot_planner;
 namespace
 {
 const double R = bsp::ShotConfiguration{}.ball_radius;
-constexpr int TOP_RIGHT = 3;  // the (+x, +y) corner pocket of the default table
+const std::string TOP_RIGHT = "top_right";  // the (+x, +y) corner pocket
+constexpr std::size_t TOP_RIGHT_INDEX = 3;  // its place in the default table's pockets
 
 bsp::TableBall ballAt(const std::string& id, double x, double y)
 {
@@ -30,7 +31,7 @@ bsp::TableBall ballAt(const std::string& id, double x, double y)
 bsp::PlanRequest cutShot(double distance, double behind, double cut_deg)
 {
   const bsp::Table table;
-  const Eigen::Vector2d pocket = table.pockets[TOP_RIGHT].centre;
+  const Eigen::Vector2d pocket = table.pockets[TOP_RIGHT_INDEX].centre;
   const Eigen::Vector2d line = -pocket.normalized();  // from the pocket towards the centre
   const Eigen::Vector2d object = pocket + distance * line;
   const Eigen::Vector2d ghost = object + 2.0 * R * line;
@@ -56,8 +57,8 @@ bsp::ShotPlan planned(const bsp::PlanRequest& request, const bsp::ShotConfigurat
 
 /// Replays a cue placement with predictShot at the configuration's own tolerance: whether ball `target` drops in
 /// `pocket` and the cue ball stays on the table.
-bool replayPots(const bsp::CuePlacement& cue, const bsp::PlanRequest& request, const std::string& target, int pocket,
-                const bsp::ShotConfiguration& configuration = {})
+bool replayPots(const bsp::CuePlacement& cue, const bsp::PlanRequest& request, const std::string& target,
+                const std::string& pocket, const bsp::ShotConfiguration& configuration = {})
 {
   std::vector<bsp::TableBall> others(request.balls.begin() + 1, request.balls.end());
   const auto outcome = bsp::predictShot(cue, configuration, others);
@@ -70,7 +71,7 @@ bool replayPots(const bsp::CuePlacement& cue, const bsp::PlanRequest& request, c
     if (run.ids[i] == target)
       for (const bsp::MotionEvent& e : run.balls[i].events)
         if (e.type == bsp::MotionEventType::Pocketed)
-          return pocket < 0 || e.pocket == pocket;
+          return pocket.empty() || e.pocket == pocket;
   return false;
 }
 }  // namespace
@@ -135,7 +136,7 @@ TEST(ShotPlanner, ItsPotProbabilityAgreesWithAFreshMeasurement)
     const auto cue = bsp::placeStroke(stroke, request.balls[0].state.position.head<2>(), R);
     const std::vector<bsp::TableBall> others(request.balls.begin() + 1, request.balls.end());
     pots += cue.ok() && bsp::cueClears(cue.value(), others, bsp::Table{}, request.limits, R) &&
-            replayPots(cue.value(), request, "one", -1);
+            replayPots(cue.value(), request, "one", "");
   }
   const double p_fresh = static_cast<double>(pots) / fresh, p_plan = plan.best.success_probability;
   const double p = 0.5 * (p_fresh + p_plan);
@@ -191,7 +192,7 @@ TEST(ShotPlanner, ABlockedPocketGivesNoPlanAndSaysWhy)
 {
   bsp::PlanRequest request = cutShot(0.4, 0.5, 0.0);
   const Eigen::Vector2d object = request.balls[1].state.position.head<2>();
-  const Eigen::Vector2d pocket = bsp::Table{}.pockets[TOP_RIGHT].centre;
+  const Eigen::Vector2d pocket = bsp::Table{}.pockets[TOP_RIGHT_INDEX].centre;
   const Eigen::Vector2d middle = 0.5 * (object + pocket);
   request.balls.push_back(ballAt("blocker", middle.x(), middle.y()));
   request.pocket = TOP_RIGHT;
@@ -213,7 +214,7 @@ TEST(ShotPlanner, ABankIsPlannedWhenNoStraightRouteIsPlayable)
   request.budget = 3.0;
   const bsp::ShotPlan plan = planned(request);
   ASSERT_TRUE(plan.found) << plan.explanation;
-  EXPECT_EQ(plan.best.bank_cushion, 2);
+  EXPECT_EQ(plan.best.bank_cushion, "rail.bottom");  // the −y rail
   EXPECT_TRUE(replayPots(plan.best.cue, request, "one", TOP_RIGHT));
   EXPECT_GT(plan.best.success_probability, 0.0);
 }
@@ -231,7 +232,7 @@ TEST(ShotPlanner, AroundABallInTheWayItPlansAKickAndAJump)
   bsp::PlanRequest request = cutShot(0.15, 0.8, 10.0);
   const Eigen::Vector2d cue = request.balls[0].state.position.head<2>();
   const Eigen::Vector2d object = request.balls[1].state.position.head<2>();
-  const Eigen::Vector2d ghost = object + 2.0 * R * (object - bsp::Table{}.pockets[TOP_RIGHT].centre).normalized();
+  const Eigen::Vector2d ghost = object + 2.0 * R * (object - bsp::Table{}.pockets[TOP_RIGHT_INDEX].centre).normalized();
   const Eigen::Vector2d along = (ghost - cue).normalized();
   const Eigen::Vector2d obstacle = cue + 0.45 * (ghost - cue) + 0.3 * R * Eigen::Vector2d(-along.y(), along.x());
   request.balls.push_back(ballAt("two", obstacle.x(), obstacle.y()));
@@ -296,7 +297,7 @@ TEST(ShotPlanner, BadRequestsAreRefusedNamingTheField)
   r.cue_ball = "white";
   EXPECT_EQ(field(r), "cue_ball");
   r = good;
-  r.pocket = 6;
+  r.pocket = "pocket6";
   EXPECT_EQ(field(r), "pocket");
   // The planner aims at capture circles: it does not plan on the jaws' model.
   bsp::ShotConfiguration jaws;
@@ -340,7 +341,7 @@ TEST(ShotPlanner, BadRequestsAreRefusedNamingTheField)
 TEST(ShotPlanner, AFrozenTargetLinedUpWithAPocketIsPotted)
 {
   const bsp::Table table;
-  const Eigen::Vector2d pocket = table.pockets[TOP_RIGHT].centre;
+  const Eigen::Vector2d pocket = table.pockets[TOP_RIGHT_INDEX].centre;
   const Eigen::Vector2d line = -pocket.normalized();
   const Eigen::Vector2d object = pocket + 0.6 * line;
   const double turn = 3.0 * M_PI / 180.0;

@@ -40,7 +40,8 @@ def test_every_row_is_the_single_shot(threads):
         for k, ball in enumerate(shot.balls):
             assert np.array_equal(batch["final_position"][i, k], ball.final_position)
             assert batch["pocket"][i, k] == ball.pocket
-    assert batch["pocket"][0, 1] == 3  # the straight-in row pots ball one in the (+x, +y) corner
+    assert batch["pocket"][0, 1] == "top_right"  # the straight-in row pots ball one in the (+x, +y) corner
+    assert batch["pocket"][0, 0] == ""  # the cue ball stays on the table
 
 
 def test_a_bad_row_reports_its_error_and_spares_the_others():
@@ -49,7 +50,7 @@ def test_a_bad_row_reports_its_error_and_spares_the_others():
     batch = bsp.simulate_many(rows, cue_ball=CUE, balls=BALLS)
     error = batch["error"][2]
     assert isinstance(error, bsp.Error) and error.field == "a" and error.code == "invalid_argument"
-    assert np.all(np.isnan(batch["velocity"][2])) and np.all(batch["pocket"][2] == -1)
+    assert np.all(np.isnan(batch["velocity"][2])) and np.all(batch["pocket"][2] == "")
     assert all(batch["error"][i] is None for i in (0, 1, 3))
 
 

@@ -114,11 +114,18 @@ def test_update_is_all_or_none():
 def test_pockets_are_a_field():
     config = bsp.Configuration()
     assert len(config["table/pockets"]) == 6
+    assert config["table/pockets"][3][:3] == pytest.approx((1.27, 0.635, 0.06))
+    assert config["table/pockets"][3][3] == "top_right"
     config["table/pockets"] = [(1.27, 0.635, 0.05)]
-    assert config["table/pockets"] == [(1.27, 0.635, 0.05)]
+    assert config["table/pockets"] == [(1.27, 0.635, 0.05, "pocket0")]  # a pocket without an id: its place
+    config["table/pockets"] = [(1.27, 0.635, 0.05, "corner"), (-1.27, 0.635, 0.05)]
+    assert config["table/pockets"] == [(1.27, 0.635, 0.05, "corner"), (-1.27, 0.635, 0.05, "pocket1")]
     with pytest.raises(bsp.Error) as raised:
         config["table/pockets"] = [(1.0, 2.0)]
     assert raised.value.field == "table/pockets"
+    with pytest.raises(bsp.Error) as raised:
+        config["table/pockets"] = [(1.27, 0.635, 0.05, "corner"), (-1.27, 0.635, 0.05, "corner")]
+    assert raised.value.field == "table/pockets[1]/id"
 
 
 def test_a_pickled_configuration_keeps_every_field():
@@ -152,7 +159,7 @@ def test_a_table_file_brings_its_table_balls_and_laws():
     assert config["table/length"] == snooker["table/length"]
     assert config["table/cushion/law/type"] == "elastic_plastic"
     assert config["table/cushion/law/yield_speed"] == snooker["table/cushion/law/yield_speed"]
-    assert config["table/pockets"][0] == pytest.approx((-1.7845, -0.889, 0.045))
+    assert config["table/pockets"][0][:3] == pytest.approx((-1.7845, -0.889, 0.045))
 
 
 @pytest.mark.parametrize(

@@ -8,7 +8,7 @@ import pytest
 import billiard_shot_planner as bsp
 
 CUE, BALLS = (0.2, 0.1), {"one": (0.8, 0.4)}
-TOP_RIGHT = 3
+TOP_RIGHT = "top_right"
 
 
 def test_a_straight_in_plan_pots_when_replayed():
@@ -42,7 +42,7 @@ def test_more_noise_pots_less_often():
         ({"budget": -1.0}, "budget"),
         ({"rollouts": 0}, "rollouts"),
         ({"cue_region": "here"}, "cue_region"),
-        ({"pocket": 17}, "pocket"),
+        ({"pocket": "pocket17"}, "pocket"),
     ],
 )
 def test_a_bad_request_is_refused_by_name(kwargs, field):

@@ -88,6 +88,9 @@ TEST(NodeSettings, TheShippedParameterFilesAreReadWhole)
   ASSERT_TRUE(settings.ok()) << settings.error().describe();
   EXPECT_EQ(settings.value().shot.cue_contact.friction, 0.7);
   EXPECT_EQ(settings.value().shot.table.pockets.size(), 6u);
+  // The file names its pockets as the outline does, the same ids as the table's default pockets.
+  for (std::size_t i = 0; i < 6; ++i)
+    EXPECT_EQ(settings.value().shot.table.pockets[i].id, bsp::Table{}.pockets[i].id) << i;
   EXPECT_EQ(settings.value().planning.rollouts, 200);
 
   XmlRpc::XmlRpcValue overlaid = fileParameters("default.yaml");
@@ -133,6 +136,13 @@ TEST(NodeSettings, AWrongTypeStopsTheNodeNamingTheParameter)
   XmlRpc::XmlRpcValue parameters = fileParameters("default.yaml");
   parameters["motion"]["max_time"] = 30;
   EXPECT_EQ(refusedField(parameters), ACCEPTED);
+  // A pocket's id is a name, and one id names one pocket.
+  XmlRpc::XmlRpcValue numbered_id = fileParameters("default.yaml");
+  numbered_id["table"]["pockets"][2][3] = 7;
+  EXPECT_EQ(refusedField(numbered_id), "table/pockets[2][3]");
+  XmlRpc::XmlRpcValue twice = fileParameters("default.yaml");
+  twice["table"]["pockets"][2][3] = "bottom_left";
+  EXPECT_NE(refusedField(twice).find("pockets[2]"), std::string::npos) << refusedField(twice);
 }
 
 TEST(NodeSettings, AKeyTheNodeDoesNotHaveStopsItNamingTheKey)
@@ -239,5 +249,6 @@ TEST(NodeSettings, TheDescriptionOfTheSettingsReadsBackToTheSameSettings)
   EXPECT_EQ(value_of("planning/rollouts"), 321.0);
   EXPECT_EQ(value_of("table/cloth/friction"), 0.152479);
   EXPECT_EQ(read_back.value().shot.table.pockets[0].centre.x(), -1.2345678901234567);
+  EXPECT_EQ(read_back.value().shot.table.pockets[0].id, "bottom_left");
   EXPECT_EQ(read_back.value().target_frame, "robot_table");
 }

@@ -18,7 +18,7 @@ from billiard_shot_planner.srv import PlanShotNow, PredictShot, PredictShotReque
 
 NODE = "/shot_predictor/"
 RADIUS = 0.0286
-TOP_RIGHT = 3  # the (+x, +y) corner pocket
+TOP_RIGHT = "top_right"  # the (+x, +y) corner pocket
 
 
 def ball(ball_id, x, y):
@@ -114,7 +114,7 @@ class PlanShotTest(unittest.TestCase):
         goal.override_values = [5.0, 2.0]
         cases.append((goal, "planning/limits"))
         goal = straight_in_goal()
-        goal.pocket_number = 9
+        goal.pocket = "pocket9"
         cases.append((goal, "pocket"))
         goal = straight_in_goal()
         goal.override_names = ["planning/noise/phi"]

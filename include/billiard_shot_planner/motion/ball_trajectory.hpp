@@ -34,7 +34,7 @@ enum class MotionEventType
   /// The ball comes back to the cushion it last left, both times slower than 1e-6 m/s: its spin presses it against
   /// the cushion (sustained contact, not modelled; the path ends)
   CushionContact,
-  Pocketed,       ///< the centre enters a pocket's capture region
+  Pocketed,       ///< the centre enters a pocket's capture region or drop region
   BallCollision,  ///< a multiple impact with the other balls that touch it, the cloth and any cushion they touch
   Rest,           ///< everything has stopped
   TimeLimit,      ///< the trajectory was cut at MotionParameters::max_time or max_events
@@ -71,10 +71,11 @@ struct MotionEvent
 {
   MotionEventType type;
   double time;
-  BallState state;   ///< after the event (after the impact for landings and cushion hits)
-  int cushion = -1;  ///< 0: −x, 1: +x, 2: −y, 3: +y (cushion hits)
-  int pocket = -1;   ///< index into Table::pockets (pocketed)
-  int ball = -1;     ///< index of a ball it met, in the simulation's list (ball collisions)
+  BallState state;  ///< after the event (after the impact for landings and cushion hits)
+  /// Cushion hits and contacts: the cushion segment's id ("rail.top", "pocket.top_right.jaw.right.point").
+  std::string cushion{};
+  std::string pocket{};  ///< pocketed: the pocket's id ("top_right")
+  int ball = -1;         ///< index of a ball it met, in the simulation's list (ball collisions)
 };
 
 struct TrajectorySample
@@ -94,6 +95,8 @@ struct BallTrajectory
 
   double duration() const { return segments.empty() ? 0.0 : segments.back().end_time; }
   const BallState& finalState() const { return events.back().state; }
+  /// The id of the pocket the ball dropped into, or empty.
+  const std::string& pocket() const;
   /// State at time t (clamped to [0, duration]).
   BallState at(double t) const;
   MotionPhase phaseAt(double t) const;

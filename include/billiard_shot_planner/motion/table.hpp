@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -10,16 +11,29 @@
 
 namespace billiard_shot_planner
 {
-/// A pocket's capture region: a ball whose centre comes within `radius` of `centre` (table plane) drops in.
+/// A pocket's capture region: a ball whose centre comes within `radius` of `centre` (table plane) drops in. `id`
+/// names it in events and plans; a pocket given without one is named by its place in the list ("pocket0", …).
 struct Pocket
 {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   double radius = 0.06;
+  std::string id{};
 };
 
 /// Six pockets of a pool table: corner capture regions centred on the corners (radius 0.06 m), side ones on the
-/// middle of the long cushions (radius 0.065 m).
+/// middle of the long cushions (radius 0.065 m), named as the outline names them (bottom_left, bottom_right,
+/// top_left, top_right, bottom_side, top_side: docs/tables.md).
 std::vector<Pocket> sixPockets(double length, double width);
+
+/// The ids of the four rails as straight cushions through the pockets (PocketModel::Circles, and a carom table's
+/// outline): along −x, +x, −y and +y.
+inline constexpr std::array<const char*, 4> RAIL_IDS = {"rail.left", "rail.right", "rail.bottom", "rail.top"};
+
+/// The index in `pockets` of the pocket with `id` (pocketId), or −1.
+int pocketIndex(const std::vector<Pocket>& pockets, const std::string& id);
+
+/// The id of `pockets[index]`: its own, or for a pocket given without one its place in the list ("pocket0", …).
+std::string pocketId(const std::vector<Pocket>& pockets, std::size_t index);
 
 /// How a pocket is cut into the cushions, in the terms of the WPA's equipment specifications (docs/tables.md).
 struct PocketCut
@@ -85,8 +99,8 @@ bool sameDefaultPockets(const Table& a, const Table& b);
 /// Checks a pocket's cut field by field; the error names the field ("table.corner_pockets.mouth").
 Status validate(const PocketCut& cut, const std::string& field);
 
-/// Checks dimensions, pockets and contact laws, and that the pockets' cuts lay out (tableOutline); the error names
-/// the field ("table.cushion.friction").
+/// Checks dimensions, pockets (finite centres, positive radii, ids unique) and contact laws, and that the pockets'
+/// cuts lay out (tableOutline); the error names the field ("table.cushion.friction", "table.pockets[2].id").
 Status validate(const Table& table, const std::string& field = "table");
 
 /// The horizontal distance between a ball's centre and a cushion nose when they touch with the ball on the cloth:

@@ -91,7 +91,7 @@ struct PlanRequest
   std::vector<TableBall> balls;  ///< every ball on the table, at rest, the cue ball among them
   std::string cue_ball = CUE_BALL_ID;
   std::string target;  ///< the ball to pot; empty: any object ball
-  int pocket = -1;     ///< index into Table::pockets; −1: any
+  std::string pocket;  ///< the id of the pocket to pot in (Table::pockets); empty: any
   RobotLimits limits;
   ExecutionNoise noise;
   std::optional<CueRegion> cue_region;
@@ -121,8 +121,8 @@ struct PlannedShot
   Stroke stroke;
   CuePlacement cue;  ///< the same shot as a cue pose and speed (as ~predict_shot takes it)
   std::string target;
-  int pocket = -1;
-  int bank_cushion = -1;  ///< the cushion the target banks off (0: −x, 1: +x, 2: −y, 3: +y); −1: straight in
+  std::string pocket;        ///< the pocket's id
+  std::string bank_cushion;  ///< the id of the rail the target banks off ("rail.top"); empty: straight in
   CueBallPath cue_ball_path = CueBallPath::Straight;
   /// m: how far inside its pocket's capture circle the target passes in the noise-free shot (negative: by how much
   /// it misses)
