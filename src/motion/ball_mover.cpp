@@ -36,7 +36,7 @@ Status checkMotionSetting(const BallProperties& ball, const Table& table, const 
                                   validate(parameters), validate(table)});
       !status)
     return status;
-  return validateCushionHeight(table.cushion_height, ball.radius, "table.cushion_height");
+  return validateForBall(table, ball.radius);
 }
 
 Status checkStart(const BallState& start, const BallProperties& ball, const Table& table,

@@ -1,6 +1,7 @@
 #include "billiard_shot_planner/motion/table.hpp"
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "billiard_shot_planner/core/validation.hpp"
 
@@ -135,6 +136,21 @@ Status validateCushionHeight(double cushion_height, double ball_radius, const st
                                "restitution, and sends it over the cushion");
   if (!(cushion_height < 2.0 * ball_radius))
     return invalidArgument(field, "must be below the ball's diameter (" + std::to_string(2.0 * ball_radius) + " m)");
+  return {};
+}
+
+Status validateForBall(const Table& table, double ball_radius, const std::string& field)
+{
+  if (Status status = validateCushionHeight(table.cushion_height, ball_radius, field + ".cushion_height"); !status)
+    return status;
+  if (table.pocket_layout == PocketLayout::None)
+    return {};
+  for (const auto& [cut, name] :
+       {std::pair{&table.corner_pockets, ".corner_pockets"}, {&table.side_pockets, ".side_pockets"}})
+    if (!(cut->mouth > 2.0 * ball_radius))
+      return invalidArgument(
+          field + name + ".mouth",
+          "must be wider than a ball (" + std::to_string(2.0 * ball_radius) + " m): no ball could drop through it");
   return {};
 }
 

@@ -34,7 +34,7 @@ Status validate(const ShotConfiguration& c)
                   requireStiffnessRatio(c.ball_contact.stiffness_ratio, "ball_ball.cloth_stiffness_ratio")});
   if (!status)
     return status;
-  return validateCushionHeight(c.table.cushion_height, c.ball_radius, "table.cushion_height");
+  return validateForBall(c.table, c.ball_radius);
 }
 
 CueStrike strikePhysics(const ShotConfiguration& c)

@@ -119,4 +119,9 @@ constexpr double MIN_CUSHION_HEIGHT = 1.0 - 0.70710678118654752440;
 /// the ball. `field` names the nose height in the error.
 Status validateCushionHeight(double cushion_height, double ball_radius, const std::string& field);
 
+/// Checks the table against its balls: the cushion's nose (validateCushionHeight, `field`.cushion_height) and, on a
+/// table with pockets, each cut's mouth wider than a ball (`field`.corner_pockets.mouth): through a narrower one no
+/// ball could drop.
+Status validateForBall(const Table& table, double ball_radius, const std::string& field = "table");
+
 }  // namespace billiard_shot_planner
