@@ -18,7 +18,8 @@
 //
 // Layout k of the random ones is drawn by std::mt19937(k) and planned with seed k; the blocked ones follow as
 // layouts N to N + 2, the detour ones as N + 3 to N + 6. Arguments: [layouts N = 200] [fresh rollouts = 1000] [planner
-// threads = 1] [one layout index: plan only that one and print both shots].
+// threads = 1] [one layout index: plan only that one and print both shots; -1: all]. PLAN_BENCHMARK_POCKET_MODEL=jaws
+// plans and replays every shot on the jaws (table.pocket_model) instead of the capture circles.
 //
 // Built with -DBILLIARD_SHOT_PLANNER_BENCHMARKS=ON (scripts/bench runs it); by hand from the repository's root:
 //   g++ -O2 -std=c++17 -Iinclude -I/usr/include/eigen3 bench/plan_benchmark.cpp -Lbuild/devel/lib
@@ -45,6 +46,20 @@ namespace
 {
 const double PLAN_BUDGET = 0.5;            ///< s
 const unsigned FRESH_SEED_OFFSET = 7919u;  ///< of the fresh rollouts' generator: another stream than the planner's
+
+/// The layouts' configuration, on the pocket model PLAN_BENCHMARK_POCKET_MODEL names (circles by default).
+const bsp::ShotConfiguration& benchConfiguration()
+{
+  static const bsp::ShotConfiguration configuration = []
+  {
+    bsp::ShotConfiguration c = CONFIGURATION;
+    const char* model = std::getenv("PLAN_BENCHMARK_POCKET_MODEL");
+    if (model && std::string(model) == "jaws")
+      c.table.pocket_model = bsp::PocketModel::Jaws;
+    return c;
+  }();
+  return configuration;
+}
 
 struct LayoutResult
 {
@@ -91,9 +106,9 @@ bool noisyRolloutPots(const ChosenShot& shot, const Layout& layout, const std::v
     ++unpredictable_rollouts;
     return false;
   }
-  if (!bsp::cueClears(cue.value(), others, CONFIGURATION.table, bsp::RobotLimits{}, R))
+  if (!bsp::cueClears(cue.value(), others, benchConfiguration().table, bsp::RobotLimits{}, R))
     return false;  // the cue touches a ball or passes through a rail: a foul, not a pot
-  const auto outcome = bsp::predictShot(cue.value(), CONFIGURATION, others);
+  const auto outcome = bsp::predictShot(cue.value(), benchConfiguration(), others);
   if (!outcome)
   {
     ++unpredictable_rollouts;
@@ -128,7 +143,7 @@ LayoutResult measure(const Layout& layout, const Settings& settings)
     if (progress.shots_that_pot > 0 && std::isnan(result.first_pot_seconds))
       result.first_pot_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  const auto plan = bsp::planShot(request, CONFIGURATION);
+  const auto plan = bsp::planShot(request, benchConfiguration());
   if (!plan)
   {
     std::fprintf(stderr, "layout %u: %s\n", layout.seed, plan.error().describe().c_str());

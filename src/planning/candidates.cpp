@@ -78,8 +78,8 @@ double frozenSpeed(double object_path, const PlanContext& context)
 std::vector<int> pocketsToTry(const PlanContext& context)
 {
   if (!context.request.pocket.empty())
-    return {pocketIndex(context.configuration.table.pockets, context.request.pocket)};
-  std::vector<int> all(context.configuration.table.pockets.size());
+    return {indexOf(context.pockets, context.request.pocket)};
+  std::vector<int> all(context.pockets.size());
   for (std::size_t k = 0; k < all.size(); ++k)
     all[k] = static_cast<int>(k);
   return all;
@@ -90,7 +90,7 @@ struct Route
 {
   Eigen::Vector2d first_leg_end;  ///< the pocket, or the point where the target meets the cushion
   double length = 0.0;            ///< m, along both legs
-  int bank_cushion = -1;          ///< 0: −x, 1: +x, 2: −y, 3: +y; −1: straight
+  int bank_cushion = -1;          ///< index in PlanContext::rails; −1: straight
 };
 
 bool routeIsClear(const Eigen::Vector2d& object, const Eigen::Vector2d& hole, const Route& route,
@@ -135,8 +135,8 @@ void addFrozenCandidate(const TableBall& target, int pocket, const Route& route,
     ++search.frozen_off_line;
     return;
   }
-  const bool route_blocked = !routeIsClear(
-      object, context.configuration.table.pockets[static_cast<std::size_t>(pocket)].centre, route, target.id, context);
+  const bool route_blocked =
+      !routeIsClear(object, context.pockets[static_cast<std::size_t>(pocket)].centre, route, target.id, context);
   search.blocked += route_blocked;
   Stroke stroke;
   stroke.phi = std::atan2(centres.y(), centres.x()) + 3.0 * turn;
@@ -158,7 +158,7 @@ void addCandidate(const TableBall& target, int pocket, const Route& route, const
     return;
   }
   const Eigen::Vector2d object = target.state.position.head<2>();
-  const Eigen::Vector2d hole = context.configuration.table.pockets[static_cast<std::size_t>(pocket)].centre;
+  const Eigen::Vector2d hole = context.pockets[static_cast<std::size_t>(pocket)].centre;
   const Eigen::Vector2d line = (route.first_leg_end - object).normalized();
   const Eigen::Vector2d ghost = object - 2.0 * context.radius() * line;
   const Eigen::Vector2d aim = ghost - context.cue_ball;
@@ -184,39 +184,34 @@ void addCandidate(const TableBall& target, int pocket, const Route& route, const
                                ghost, line, cue_path_blocked, route_blocked});
 }
 
-/// The route off cushion `cushion` to the pocket at `hole`, by the mirror image of the pocket in the line the
-/// target's centre runs along when it touches the cushion's nose; none when the pocket lies on that cushion, or the
-/// target would meet the cushion within a pocket's reach (its jaws).
-std::optional<Route> bankRoute(const Eigen::Vector2d& object, const Eigen::Vector2d& hole, int cushion,
+/// The route off rail `rail` (context.rails) to `pocket`, by the mirror image of its aim in the line the target's
+/// centre runs along when it touches the rail's nose; none when the pocket lies on that rail, or the target would meet
+/// the rail within a pocket's reach (its jaws).
+std::optional<Route> bankRoute(const Eigen::Vector2d& object, const PocketTarget& pocket, int rail,
                                const PlanContext& context)
 {
-  const Table& table = context.configuration.table;
-  const double radius = context.radius();
-  const int axis = cushion / 2;
-  const double side = cushion % 2 == 0 ? -1.0 : 1.0;
-  const double half = 0.5 * (axis == 0 ? table.length : table.width);
-  if (side * hole(axis) >= half - 1e-9)
-    return std::nullopt;  // the pocket is on this cushion
-  const double line = side * (half - cushionReach(table, radius));
-  Eigen::Vector2d mirrored = hole;
-  mirrored(axis) = 2.0 * line - hole(axis);
-  const double t = (line - object(axis)) / (mirrored(axis) - object(axis));
+  const RailLine& off = context.rails[static_cast<std::size_t>(rail)];
+  if (off.holds(pocket.place))
+    return std::nullopt;  // the pocket is on this rail
+  const Eigen::Vector2d mirrored = off.mirror(pocket.centre);
+  const double t = off.crossing(object, mirrored);
   if (!(t > 0.0 && t < 1.0))
     return std::nullopt;
   const Eigen::Vector2d bounce = object + t * (mirrored - object);
-  for (const Pocket& p : table.pockets)
-    if ((bounce - p.centre).norm() < p.radius + 2.0 * radius)
+  for (const PocketTarget& p : context.pockets)
+    if ((bounce - p.centre).norm() < p.radius + 2.0 * context.radius())
       return std::nullopt;
-  return Route{bounce, (mirrored - object).norm(), cushion};
+  return Route{bounce, (mirrored - object).norm(), rail};
 }
 
 void addCandidates(const TableBall& target, int pocket, const PlanContext& context, CandidateSearch& search)
 {
   const Eigen::Vector2d object = target.state.position.head<2>();
-  const Eigen::Vector2d hole = context.configuration.table.pockets[static_cast<std::size_t>(pocket)].centre;
+  const PocketTarget& place = context.pockets[static_cast<std::size_t>(pocket)];
+  const Eigen::Vector2d& hole = place.centre;
   addCandidate(target, pocket, Route{hole, (hole - object).norm(), -1}, context, search);
-  for (int cushion = 0; cushion < 4; ++cushion)
-    if (const auto route = bankRoute(object, hole, cushion, context))
+  for (std::size_t rail = 0; rail < context.rails.size(); ++rail)
+    if (const auto route = bankRoute(object, place, static_cast<int>(rail), context))
       addCandidate(target, pocket, *route, context, search);
 }
 }  // namespace

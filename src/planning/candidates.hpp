@@ -20,7 +20,7 @@ struct Candidate
   Stroke stroke;
   double cut = 0.0;         ///< rad, between the cue ball's path and the target's (frozen: the route's turn)
   double difficulty = 0.0;  ///< smaller is easier: the paths' length over the cut's cosine (frozen: the route's)
-  int bank_cushion = -1;    ///< the cushion the target banks off (0: −x, 1: +x, 2: −y, 3: +y); −1: straight in
+  int bank_cushion = -1;    ///< the rail the target banks off (its index in PlanContext::rails); −1: straight in
   CueBallPath cue_ball_path = CueBallPath::Straight;
   Eigen::Vector2d ghost = Eigen::Vector2d::Zero();  ///< where the cue ball's centre meets the target
   Eigen::Vector2d line = Eigen::Vector2d::UnitX();  ///< the direction the target must leave in

@@ -287,15 +287,10 @@ std::optional<Stroke> withClearCue(Stroke stroke, double theta, const PlanContex
   return stroke;
 }
 
-/// A kick off `cushion`: aimed at the ghost ball's image in the line the cue ball's centre runs along at its nose.
-std::optional<Variant> kickVariant(const Candidate& blocked, int cushion, const PlanContext& context)
+/// A kick off `rail`: aimed at the ghost ball's image in the line the cue ball's centre runs along at its nose.
+std::optional<Variant> kickVariant(const Candidate& blocked, const RailLine& rail, const PlanContext& context)
 {
-  const Table& table = context.configuration.table;
-  const int axis = cushion / 2;
-  const double side = cushion % 2 == 0 ? -1.0 : 1.0;
-  const double line = side * (0.5 * (axis == 0 ? table.length : table.width) - cushionReach(table, context.radius()));
-  Eigen::Vector2d image = blocked.ghost;
-  image(axis) = 2.0 * line - image(axis);
+  const Eigen::Vector2d image = rail.mirror(blocked.ghost);
   Stroke stroke = blocked.stroke;
   stroke.phi = angleOf(image - context.cue_ball);
   stroke.a = stroke.b = 0.0;
@@ -326,8 +321,8 @@ std::vector<Variant> variants(const Candidate& blocked, const PlanContext& conte
   const RobotLimits& limits = context.request.limits;
   const double straight = (blocked.ghost - context.cue_ball).norm();
   std::vector<Variant> all;
-  for (int cushion = 0; cushion < 4; ++cushion)
-    if (const auto kick = kickVariant(blocked, cushion, context))
+  for (const RailLine& rail : context.rails)
+    if (const auto kick = kickVariant(blocked, rail, context))
       all.push_back(*kick);
   for (double theta : elevations(MASSE_ELEVATIONS, limits))
     for (double side : {1.0, -1.0})

@@ -7,13 +7,37 @@
 #include <string>
 #include <vector>
 
+#include "billiard_shot_planner/motion/table_outline.hpp"
 #include "billiard_shot_planner/planning/shot_planner.hpp"
+#include "rail_lines.hpp"
 
 namespace billiard_shot_planner
 {
 namespace planning
 {
 using Clock = std::chrono::steady_clock;
+
+/// A pocket as the planner aims at it and measures a shot's margin in. On the capture circles' table
+/// (PocketModel::Circles) the capture circle, sitting at its centre. Under the jaws the mouth: its middle, as radius
+/// the most a ball's centre may pass that middle by and still clear both jaw points (half the mouth less the cushion's
+/// reach), its jaws' segments (facings and points), and sitting where the pocket's axis meets the rails' rectangle
+/// (the corner, or the rail's middle).
+struct PocketTarget
+{
+  std::string id;
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  double radius = 0.0;
+  Eigen::Vector2d place = Eigen::Vector2d::Zero();
+  std::vector<NoseSegment> jaws;                   ///< empty on the capture circles' table
+  double reach = 0.0;                              ///< m, the cushion's reach (cushionReach) for the planner's balls
+  Eigen::Vector2d axis = Eigen::Vector2d::Zero();  ///< unit, from the mouth's middle into the pocket
+};
+
+/// The pockets of `table`'s pocket model, as the planner aims at them. Errors: tableOutline's (under the jaws).
+Expected<std::vector<PocketTarget>> pocketTargets(const Table& table, double ball_radius);
+
+/// The index in `pockets` of the pocket with `id`, or −1.
+int indexOf(const std::vector<PocketTarget>& pockets, const std::string& id);
 
 struct PlanContext
 {
@@ -22,6 +46,8 @@ struct PlanContext
   Eigen::Vector2d cue_ball;         ///< its centre on the cloth
   std::vector<TableBall> others;    ///< every ball but the cue ball, in the request's order
   Clock::time_point deadline;
+  std::vector<PocketTarget> pockets;  ///< pocketTargets of the table; candidates index them
+  std::array<RailLine, 4> rails;      ///< railLines of the table; a bank's candidate indexes them
   /// The cue ball touches a ball or a cushion: its strike moves them too (strikeBall), so no search may stand on the
   /// lone ball's strike.
   bool cue_ball_touches = false;

@@ -3,6 +3,7 @@
 
 #include "billiard_shot_planner/core/validation.hpp"
 #include "billiard_shot_planner/planning/shot_planner.hpp"
+#include "plan_context.hpp"
 
 namespace billiard_shot_planner
 {
@@ -71,23 +72,21 @@ Status checkBalls(const PlanRequest& r, const ShotConfiguration& c)
 }
 
 /// "bottom_left, bottom_right, …": the ids a request may name.
-std::string pocketIds(const std::vector<Pocket>& pockets)
+std::string pocketIds(const std::vector<planning::PocketTarget>& pockets)
 {
   std::string ids;
-  for (std::size_t i = 0; i < pockets.size(); ++i)
-    ids += (i ? ", " : "") + pocketId(pockets, i);
+  for (const planning::PocketTarget& pocket : pockets)
+    ids += (ids.empty() ? "" : ", ") + pocket.id;
   return ids;
 }
 
 Status checkSearch(const PlanRequest& r, const ShotConfiguration& c)
 {
-  // The planner aims at the capture circles and measures its margins against them: it plans on the table whose
-  // motion drops balls into them.
-  if (c.table.pocket_model != PocketModel::Circles)
-    return invalidArgument("table.pocket_model",
-                           "the planner aims at the capture circles (table.pockets): plan with \"circles\"");
-  if (!r.pocket.empty() && pocketIndex(c.table.pockets, r.pocket) < 0)
-    return invalidArgument("pocket", "names no pocket of the table (" + pocketIds(c.table.pockets) + "), got \"" +
+  auto pockets = planning::pocketTargets(c.table, c.ball_radius);
+  if (!pockets)
+    return pockets.error();
+  if (!r.pocket.empty() && planning::indexOf(pockets.value(), r.pocket) < 0)
+    return invalidArgument("pocket", "names no pocket of the table (" + pocketIds(pockets.value()) + "), got \"" +
                                          r.pocket + "\"; empty for any");
   if (r.cue_region)
     if (Status status = firstError({requireFinite(r.cue_region->centre, "cue_region.centre"),

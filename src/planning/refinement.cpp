@@ -45,7 +45,7 @@ double margin(const std::vector<double>& x, std::vector<double>& /*gradient*/, v
 
 double goodMargin(const Candidate& candidate, const PlanContext& context)
 {
-  return 0.5 * context.configuration.table.pockets[static_cast<std::size_t>(candidate.pocket)].radius;
+  return 0.5 * context.pockets[static_cast<std::size_t>(candidate.pocket)].radius;
 }
 
 RefinedShot refine(const Candidate& candidate, const PlanContext& context, Clock::time_point deadline)

@@ -14,6 +14,10 @@ namespace
 /// 1.5 cm between them, and the margin only has to rank near misses.
 constexpr double APPROACH_SAMPLE_SPACING = 0.005;
 
+/// Spacing of the samples on which a ball's clearance from a pocket's jaws is measured: 2 mm of travel at 2 m/s, so
+/// that the margin the refinement climbs is smooth to a fraction of a millimetre.
+constexpr double JAW_SAMPLE_SPACING = 0.001;
+
 int indexOf(const TableTrajectory& run, const std::string& id)
 {
   const auto found = std::find(run.ids.begin(), run.ids.end(), id);
@@ -28,14 +32,42 @@ const MotionEvent* pocketedEvent(const BallTrajectory& path)
   return nullptr;
 }
 
-/// How far inside the capture circle of pocket `index` the ball's path passes: for a ball that drops there, the
-/// capture radius less the distance from the pocket's centre to the line it enters along; otherwise (≤ 0) the
-/// capture radius less its closest approach.
-double pocketMargin(const BallTrajectory& path, const Table& table, int index)
+/// How far the ball's path keeps from the pocket's jaws (PocketTarget::jaws) until it crosses the mouth: for a ball
+/// that drops there, its closest approach to a jaw's facing or point less the cushion's reach (0 where it touches
+/// one) up to the mouth's line, at most the mouth's half-width; otherwise (≤ 0) less its closest approach to the
+/// mouth's middle, so that a search among misses, a rattle out of the jaws among them, still has a slope to climb. The
+/// clearance at the mouth, not the distance from its middle, is what noise eats: a shot along a rail into a corner
+/// clears the near jaw best on a line deeper than the mouth's middle. Beyond the mouth the facings close in and a ball
+/// that glances off one mostly drops (docs/tables.md, effective targets), so they do not count there.
+double mouthMargin(const BallTrajectory& path, const PocketTarget& pocket)
 {
-  const Pocket& pocket = table.pockets[static_cast<std::size_t>(index)];
   const MotionEvent* dropped = pocketedEvent(path);
-  if (dropped && dropped->pocket == pocketId(table.pockets, static_cast<std::size_t>(index)))
+  double clearance = INFINITY, closest = INFINITY;
+  for (const TrajectorySample& sample : path.sample(JAW_SAMPLE_SPACING))
+  {
+    if (dropped && sample.time > dropped->time)
+      break;
+    const Eigen::Vector2d centre = sample.state.position.head<2>();
+    closest = std::min(closest, (centre - pocket.centre).norm());
+    for (const NoseSegment& jaw : pocket.jaws)
+      clearance = std::min(clearance, (centre - jaw.closestPoint(centre)).norm() - pocket.reach);
+    if ((centre - pocket.centre).dot(pocket.axis) > 0.0)
+      break;  // past the mouth's line
+  }
+  if (dropped && dropped->pocket == pocket.id)
+    return std::min(clearance, pocket.radius);
+  return -closest;
+}
+
+/// How far inside the pocket's capture circle the ball's path passes (on the capture circles' table; under the jaws
+/// mouthMargin): for a ball that drops there, the capture radius less the distance from the pocket's centre to the
+/// line it enters along; otherwise (≤ 0) the capture radius less its closest approach.
+double pocketMargin(const BallTrajectory& path, const PocketTarget& pocket)
+{
+  if (!pocket.jaws.empty())
+    return mouthMargin(path, pocket);
+  const MotionEvent* dropped = pocketedEvent(path);
+  if (dropped && dropped->pocket == pocket.id)
   {
     const Eigen::Vector2d to_centre = pocket.centre - dropped->state.position.head<2>();
     const Eigen::Vector2d velocity = dropped->state.velocity.head<2>();
@@ -95,10 +127,10 @@ StrokeEvaluation evaluateStroke(const Stroke& stroke, const std::string& target,
   evaluation.valid = true;
   evaluation.pots = isPot(run, target_index, context);
   evaluation.target_end = run.balls[static_cast<std::size_t>(target_index)].finalState().position.head<2>();
-  evaluation.margin =
-      pocketMargin(run.balls[static_cast<std::size_t>(target_index)], context.configuration.table, pocket);
+  const PocketTarget& aimed = context.pockets[static_cast<std::size_t>(pocket)];
+  evaluation.margin = pocketMargin(run.balls[static_cast<std::size_t>(target_index)], aimed);
   if (run.balls[0].outcome == MotionOutcome::Pocketed || run.balls[0].outcome == MotionOutcome::OffTable)
-    evaluation.margin = std::min(evaluation.margin, -context.configuration.table.pockets[0].radius);
+    evaluation.margin = std::min(evaluation.margin, -aimed.radius);
   return evaluation;
 }
 

@@ -102,9 +102,9 @@ PlannedShot plannedShot(const RefinedShot& shot, const PlanContext& context)
   planned.stroke = shot.candidate.stroke;
   planned.cue = placeStroke(planned.stroke, context.cue_ball, context.radius()).value();
   planned.target = shot.candidate.target;
-  planned.pocket = pocketId(context.configuration.table.pockets, static_cast<std::size_t>(shot.candidate.pocket));
+  planned.pocket = context.pockets[static_cast<std::size_t>(shot.candidate.pocket)].id;
   if (shot.candidate.bank_cushion >= 0)
-    planned.bank_cushion = RAIL_IDS[static_cast<std::size_t>(shot.candidate.bank_cushion)];
+    planned.bank_cushion = context.rails[static_cast<std::size_t>(shot.candidate.bank_cushion)].id;
   planned.cue_ball_path = shot.candidate.cue_ball_path;
   planned.margin = shot.evaluation.margin;
   return planned;
@@ -175,7 +175,7 @@ void playUntil(NoisyRollouts& rollouts, const PlanContext& context, Clock::time_
 
 NoisyRollouts confirmingRollouts(const PlannedShot& shot, unsigned stream, const PlanContext& context)
 {
-  return NoisyRollouts(shot.stroke, shot.target, pocketIndex(context.configuration.table.pockets, shot.pocket),
+  return NoisyRollouts(shot.stroke, shot.target, indexOf(context.pockets, shot.pocket),
                        context.request.seed + CONFIRMATION_SEED_OFFSET + stream,
                        CONFIRMATION_FACTOR * context.request.rollouts, context);
 }
@@ -225,14 +225,17 @@ std::string noPotExplanation(const CandidateSearch& search, const std::vector<Re
   const RefinedShot& closest = refined.front();
   return "no shot found that pots (" + text + "; " + std::to_string(refined.size()) +
          " refined): the closest, ball \"" + closest.candidate.target + "\" into pocket " +
-         pocketId(context.configuration.table.pockets, static_cast<std::size_t>(closest.candidate.pocket)) +
-         ", misses by " + std::to_string(-closest.evaluation.margin) + " m";
+         context.pockets[static_cast<std::size_t>(closest.candidate.pocket)].id + ", misses by " +
+         std::to_string(-closest.evaluation.margin) + " m";
 }
 }  // namespace
 
 PlanContext makeContext(const PlanRequest& request, const ShotConfiguration& configuration)
 {
-  PlanContext context{request, configuration, Eigen::Vector2d::Zero(), {}, {}, false};
+  PlanContext context{request, configuration, Eigen::Vector2d::Zero(), {}, {}, {}, {}, false};
+  // A validated request's table lays out (validate(table) includes its outline).
+  context.pockets = pocketTargets(configuration.table, configuration.ball_radius).value();
+  context.rails = railLines(configuration.table, configuration.ball_radius);
   context.configuration.solver.relative_tolerance =
       std::max(configuration.solver.relative_tolerance, PLANNING_TOLERANCE);
   context.configuration.solver.absolute_tolerance = std::max(

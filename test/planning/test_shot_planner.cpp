@@ -111,6 +111,27 @@ TEST(ShotPlanner, AStraightInShotIsPlannedAlongTheLineOfCentres)
   EXPECT_LE(plan.best.rollouts, 4 * request.rollouts);
 }
 
+// On the jaws' table the planner aims through the mouth: the straight-in shot into the corner (18° off its axis) pots
+// when replayed on the jaws, and its margin is its clearance from the jaws up to the mouth: no more than the mouth's
+// half-width that clears both jaw points, half the WPA's 4.5625 in mouth less the cushion's reach R cos θ,
+// sin θ = (h − R)/R, and no less than half of that, where the refinement stops as good enough.
+TEST(ShotPlanner, OnTheJawsItAimsThroughTheMouth)
+{
+  bsp::ShotConfiguration jaws;
+  jaws.table.pocket_model = bsp::PocketModel::Jaws;
+  bsp::PlanRequest request = cutShot(0.4, 0.5, 0.0);
+  request.pocket = TOP_RIGHT;
+  const bsp::ShotPlan plan = planned(request, jaws);
+  ASSERT_TRUE(plan.found) << plan.explanation;
+  EXPECT_EQ(plan.best.pocket, TOP_RIGHT);
+  EXPECT_TRUE(replayPots(plan.best.cue, request, "one", TOP_RIGHT, jaws));
+  const double sin_theta = (jaws.table.cushion_height - R) / R;
+  const double half_width = 0.5 * 4.5625 * 0.0254 - R * std::sqrt(1.0 - sin_theta * sin_theta);
+  EXPECT_LE(plan.best.margin, half_width + 1e-12);
+  EXPECT_GE(plan.best.margin, 0.5 * half_width);
+  EXPECT_GT(plan.best.success_probability, 0.8);
+}
+
 // The planner's pot probability of a 40° cut against 1 000 fresh noisy rollouts drawn here, with another generator,
 // and replayed at the default tolerance (the planner runs at PLANNING_TOLERANCE; a stroke whose cue touches a ball or a
 // rail is a miss in both): the two binomial estimates agree within three standard deviations of their difference.
@@ -299,12 +320,15 @@ TEST(ShotPlanner, BadRequestsAreRefusedNamingTheField)
   r = good;
   r.pocket = "pocket6";
   EXPECT_EQ(field(r), "pocket");
-  // The planner aims at capture circles: it does not plan on the jaws' model.
+  // Under the jaws the pockets are the outline's: a capture circle's id names none of them.
   bsp::ShotConfiguration jaws;
   jaws.table.pocket_model = bsp::PocketModel::Jaws;
-  const auto on_jaws = bsp::planShot(good, jaws);
+  jaws.table.pockets = {{{1.27, 0.635}, 0.06, "corner"}};
+  r = good;
+  r.pocket = "corner";
+  const auto on_jaws = bsp::planShot(r, jaws);
   ASSERT_FALSE(on_jaws.ok());
-  EXPECT_EQ(on_jaws.error().field, "table.pocket_model");
+  EXPECT_EQ(on_jaws.error().field, "pocket");
   r = good;
   r.limits.min_speed = 3.0;
   r.limits.max_speed = 2.0;

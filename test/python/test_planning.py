@@ -27,6 +27,18 @@ def test_a_straight_in_plan_pots_when_replayed():
     assert again.best.stroke.phi == best.stroke.phi and again.best.success_probability == best.success_probability
 
 
+def test_on_the_jaws_a_plan_aims_through_the_mouth_and_names_its_pocket():
+    config = bsp.Configuration()
+    config["table/pocket_model"] = "jaws"
+    plan = bsp.plan_shot(CUE, BALLS, target="one", pocket=TOP_RIGHT, budget=3.0, configuration=config)
+    assert plan.found, plan.explanation
+    assert plan.best.pocket == TOP_RIGHT and plan.best.bank_cushion == ""
+    replay = bsp.predict_shot(plan.best.stroke, cue_ball=CUE, balls=BALLS, configuration=config)
+    assert replay.ball("one").outcome == "pocketed" and replay.ball("one").pocket == TOP_RIGHT
+    # The margin is measured in the mouth: at most half its 4.5625 in less the cushion's reach, 30.4 mm.
+    assert 0.0 < plan.best.margin <= 0.0305
+
+
 def test_more_noise_pots_less_often():
     steady = bsp.plan_shot(CUE, BALLS, target="one", budget=3.0, seed=5)
     shaky = bsp.Noise()
