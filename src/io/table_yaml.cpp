@@ -58,11 +58,10 @@ Status validateTableFile(const ShotConfiguration& c, bool names_balls)
     error.field = "motion." + error.field;
     motion = error;
   }
-  return firstError(
-      {validate(c.table, "table"), validate(c.ball_contact.ball_ball, "ball_ball"),
-       requireStiffnessRatio(c.ball_contact.stiffness_ratio, "ball_ball.cloth_stiffness_ratio"), motion,
-       requirePositive(c.ball_mass, "ball_mass"), requirePositive(c.ball_radius, "ball_radius"),
-       names_balls ? validateForBall(c.table, c.ball_radius) : Status{}});
+  return firstError({validate(c.table, "table"), validate(c.ball_contact.ball_ball, "ball_ball"),
+                     requireStiffnessRatio(c.ball_contact.stiffness_ratio, "ball_ball.cloth_stiffness_ratio"), motion,
+                     requirePositive(c.ball_mass, "ball_mass"), requirePositive(c.ball_radius, "ball_radius"),
+                     names_balls ? validateForBall(c.table, c.ball_radius) : Status{}});
 }
 
 TableFile tableFileOf(const ShotConfiguration& configuration)
