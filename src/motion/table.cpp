@@ -119,9 +119,16 @@ Status validate(const Table& table, const std::string& field)
         !status)
       return status;
     for (std::size_t j = 0; j < i; ++j)
+    {
       if (pocketId(table.pockets, j) == pocketId(table.pockets, i))
         return invalidArgument(name + ".id", "\"" + pocketId(table.pockets, i) + "\" names pocket " +
                                                  std::to_string(j) + " too: each pocket needs its own id");
+      // A ball's centre in both circles would drop into whichever the search met first.
+      if ((table.pockets[i].centre - table.pockets[j].centre).norm() <
+          table.pockets[i].radius + table.pockets[j].radius)
+        return invalidArgument(name + ".centre", "overlaps pocket " + pocketId(table.pockets, j) +
+                                                     "'s capture region: pockets' capture regions must not overlap");
+    }
   }
   return validatePocketFit(table, field);
 }

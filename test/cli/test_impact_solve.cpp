@@ -570,6 +570,8 @@ TEST(ImpactSolve, AConfigurationSectionOfTheWrongKindIsRefused)
       {motion + R"("table": {"pockets": [{"centre": [0, 0]}]}})", "table.pockets[0].radius"},
       {motion + R"("table": {"pockets": [{"id": 4, "centre": [0, 0], "radius": 0.05}]}})", "table.pockets[0].id"},
       {motion + R"("table": {"corner_pockets": {"mouth": 0.05}}})", "table.corner_pockets.mouth"},  // below 2R
+      {motion + R"("table": {"pockets": [{"centre": [0, 0], "radius": 0.05}, {"centre": [0.09, 0], "radius": 0.05}]}})",
+       "table.pockets[1].centre"},  // overlapping capture regions
       {motion + R"("table": {"pockets": [{"id": "a", "centre": [0, 0], "radius": 0.05},
                                          {"id": "a", "centre": [1, 0], "radius": 0.05}]}})",
        "table.pockets[1].id"},

@@ -99,8 +99,9 @@ bool sameDefaultPockets(const Table& a, const Table& b);
 /// Checks a pocket's cut field by field; the error names the field ("table.corner_pockets.mouth").
 Status validate(const PocketCut& cut, const std::string& field);
 
-/// Checks dimensions, pockets (finite centres, positive radii, ids unique) and contact laws, and that the pockets'
-/// cuts lay out (tableOutline); the error names the field ("table.cushion.friction", "table.pockets[2].id").
+/// Checks dimensions, pockets (finite centres, positive radii, ids unique, capture regions apart) and contact laws, and
+/// that the pockets' cuts lay out (tableOutline); the error names the field ("table.cushion.friction",
+/// "table.pockets[2].id").
 Status validate(const Table& table, const std::string& field = "table");
 
 /// The horizontal distance between a ball's centre and a cushion nose when they touch with the ball on the cloth:
