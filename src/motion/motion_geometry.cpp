@@ -111,10 +111,9 @@ Eigen::Vector2d farEnd(const NoseSegment& facing, const PocketOpening& pocket)
 /// The throat between the pocket's jaw points and its facings' far ends, counterclockwise.
 Throat throatOf(const TableOutline& outline, const PocketOpening& pocket)
 {
-  const std::string prefix = "pocket." + pocket.id + ".jaw.";
   std::vector<Eigen::Vector2d> far_ends;
-  for (const NoseSegment& segment : outline.cushions)
-    if (segment.id.rfind(prefix, 0) == 0 && segment.shape == NoseSegment::Shape::Line)
+  for (const NoseSegment& segment : outline.jawsOf(pocket.id))
+    if (segment.shape == NoseSegment::Shape::Line)
       far_ends.push_back(farEnd(segment, pocket));
   if (far_ends.size() != 2)
     return Throat{{pocket.jaw_out, pocket.drop_centre, pocket.drop_centre, pocket.jaw_in}};

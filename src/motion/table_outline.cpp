@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "billiard_shot_planner/core/plane_geometry.hpp"
 
@@ -175,6 +176,16 @@ const PocketOpening* TableOutline::pocket(const std::string& id) const
 {
   const auto found = std::find_if(pockets.begin(), pockets.end(), [&](const auto& p) { return p.id == id; });
   return found == pockets.end() ? nullptr : &*found;
+}
+
+std::vector<NoseSegment> TableOutline::jawsOf(const std::string& pocket) const
+{
+  // Jaw segments are named "pocket.<pocket>.jaw.<side>.facing|point" (docs/tables.md, Ids).
+  const std::string prefix = "pocket." + pocket + ".jaw.";
+  std::vector<NoseSegment> jaws;
+  std::copy_if(cushions.begin(), cushions.end(), std::back_inserter(jaws),
+               [&](const NoseSegment& segment) { return segment.id.rfind(prefix, 0) == 0; });
+  return jaws;
 }
 
 Expected<TableOutline> tableOutline(const Table& table, const std::string& field)

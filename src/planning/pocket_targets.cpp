@@ -54,13 +54,9 @@ Expected<std::vector<PocketTarget>> pocketTargets(const Table& table, double bal
                         opening.mouthMiddle(),
                         std::max(0.5 * opening.mouth() - reach, 0.0),
                         onTheRails(opening.mouthMiddle(), opening.axis, table),
-                        {},
+                        outline.value().jawsOf(opening.id),
                         reach,
                         opening.axis};
-    const std::string prefix = "pocket." + opening.id + ".jaw.";
-    for (const NoseSegment& segment : outline.value().cushions)
-      if (segment.id.rfind(prefix, 0) == 0)
-        target.jaws.push_back(segment);
     targets.push_back(std::move(target));
   }
   return targets;

@@ -59,6 +59,8 @@ struct TableOutline
   /// The segment or pocket with `id`, or null.
   const NoseSegment* cushion(const std::string& id) const;
   const PocketOpening* pocket(const std::string& id) const;
+  /// The segments of pocket `id`'s jaws (each facing and its rounded point), in the outline's order.
+  std::vector<NoseSegment> jawsOf(const std::string& pocket) const;
 };
 
 /// Lays out the table's cushions and pockets from its size and its pockets' cuts (Table::pocket_layout,
